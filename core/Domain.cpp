@@ -1,0 +1,257 @@
+#include "core/Domain.h"
+
+#include <algorithm>
+
+#include "core/OpenSeesError.h"
+
+namespace beamsolid {
+
+Domain::Domain() = default;
+
+Domain::~Domain() {
+  // Recorded data is never lost: close (and so flush) every recorder.
+  for (auto& [tag, r] : recorders_) r->close();
+}
+
+void Domain::addNode(std::unique_ptr<Node> node, const std::string& context) {
+  const int tag = node->tag();
+  if (nodes_.count(tag)) throw OpenSeesError(context + ": node " + std::to_string(tag) + " already exists");
+  nodes_.emplace(tag, std::move(node));
+  touch();
+}
+
+Node* Domain::findNode(int tag) const {
+  auto it = nodes_.find(tag);
+  return it == nodes_.end() ? nullptr : it->second.get();
+}
+
+Node& Domain::node(int tag, const std::string& context) const {
+  Node* n = findNode(tag);
+  if (!n) throw OpenSeesError(context + ": node " + std::to_string(tag) + " does not exist");
+  return *n;
+}
+
+void Domain::removeNode(int tag, const std::string& context) {
+  node(tag, context);
+  for (const auto& [etag, e] : elements_)
+    for (int nt : e->nodeTags())
+      if (nt == tag)
+        throw OpenSeesError(context + ": node " + std::to_string(tag) + " is used by element " +
+                            std::to_string(etag) + "; remove the element first");
+  sps_.erase(std::remove_if(sps_.begin(), sps_.end(), [&](const SPConstraint& s) { return s.nodeTag == tag; }),
+             sps_.end());
+  mps_.erase(std::remove_if(mps_.begin(), mps_.end(),
+                            [&](const MPConstraint& m) {
+                              return m.constrainedNode == tag || m.retainedNode == tag;
+                            }),
+             mps_.end());
+  for (auto& [ptag, p] : patterns_) p->removeReferencesTo(tag, -1);
+  nodes_.erase(tag);
+  touch();
+}
+
+void Domain::addElement(std::unique_ptr<Element> element, const std::string& context) {
+  const int tag = element->tag();
+  if (elements_.count(tag))
+    throw OpenSeesError(context + ": element " + std::to_string(tag) + " already exists");
+  element->connect(*this);
+  elements_.emplace(tag, std::move(element));
+  touch();
+}
+
+Element* Domain::findElement(int tag) const {
+  auto it = elements_.find(tag);
+  return it == elements_.end() ? nullptr : it->second.get();
+}
+
+Element& Domain::element(int tag, const std::string& context) const {
+  Element* e = findElement(tag);
+  if (!e) throw OpenSeesError(context + ": element " + std::to_string(tag) + " does not exist");
+  return *e;
+}
+
+void Domain::removeElement(int tag, const std::string& context) {
+  element(tag, context);
+  for (auto& [ptag, p] : patterns_) p->removeReferencesTo(-1, tag);
+  elements_.erase(tag);
+  touch();
+}
+
+void Domain::addSP(const SPConstraint& sp, const std::string& context) {
+  Node& n = node(sp.nodeTag, context);
+  if (sp.dof < 0 || sp.dof >= n.ndf())
+    throw OpenSeesError(context + ": dof " + std::to_string(sp.dof + 1) + " is out of range for node " +
+                        std::to_string(sp.nodeTag) + " (ndf " + std::to_string(n.ndf()) + ")");
+  for (const auto& s : sps_)
+    if (s.nodeTag == sp.nodeTag && s.dof == sp.dof)
+      throw OpenSeesError(context + ": node " + std::to_string(sp.nodeTag) + " dof " +
+                          std::to_string(sp.dof + 1) + " is already fixed");
+  sps_.push_back(sp);
+  touch();
+}
+
+bool Domain::removeSP(int nodeTag, int dof) {
+  auto it = std::remove_if(sps_.begin(), sps_.end(),
+                           [&](const SPConstraint& s) { return s.nodeTag == nodeTag && s.dof == dof; });
+  bool removed = it != sps_.end();
+  sps_.erase(it, sps_.end());
+  for (auto& [ptag, p] : patterns_) removed = p->removeSP(nodeTag, dof) || removed;
+  if (removed) touch();
+  return removed;
+}
+
+void Domain::addMP(MPConstraint mp, const std::string& context) {
+  if (mp.retainedNode == mp.constrainedNode)
+    throw OpenSeesError(context + ": retained and constrained node are the same (" +
+                        std::to_string(mp.retainedNode) + ")");
+  Node& r = node(mp.retainedNode, context);
+  Node& c = node(mp.constrainedNode, context);
+  for (int d : mp.retainedDofs)
+    if (d < 0 || d >= r.ndf())
+      throw OpenSeesError(context + ": dof " + std::to_string(d + 1) + " is out of range for retained node " +
+                          std::to_string(r.tag()));
+  for (int d : mp.constrainedDofs) {
+    if (d < 0 || d >= c.ndf())
+      throw OpenSeesError(context + ": dof " + std::to_string(d + 1) +
+                          " is out of range for constrained node " + std::to_string(c.tag()));
+    for (const auto& m : mps_)
+      if (m.constrainedNode == c.tag() &&
+          std::find(m.constrainedDofs.begin(), m.constrainedDofs.end(), d) != m.constrainedDofs.end())
+        throw OpenSeesError(context + ": dof " + std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
+                            " is already constrained by another multi-point constraint");
+  }
+  mp.tag = nextMPTag_++;
+  mps_.push_back(std::move(mp));
+  touch();
+}
+
+bool Domain::removeMP(int constrainedNode) {
+  auto it = std::remove_if(mps_.begin(), mps_.end(),
+                           [&](const MPConstraint& m) { return m.constrainedNode == constrainedNode; });
+  bool removed = it != mps_.end();
+  mps_.erase(it, mps_.end());
+  if (removed) touch();
+  return removed;
+}
+
+void Domain::addPattern(std::unique_ptr<LoadPattern> pattern, const std::string& context) {
+  const int tag = pattern->tag();
+  if (patterns_.count(tag))
+    throw OpenSeesError(context + ": load pattern " + std::to_string(tag) + " already exists");
+  patterns_.emplace(tag, std::move(pattern));
+  touch();
+}
+
+LoadPattern* Domain::findPattern(int tag) const {
+  auto it = patterns_.find(tag);
+  return it == patterns_.end() ? nullptr : it->second.get();
+}
+
+LoadPattern& Domain::pattern(int tag, const std::string& context) const {
+  LoadPattern* p = findPattern(tag);
+  if (!p) throw OpenSeesError(context + ": load pattern " + std::to_string(tag) + " does not exist");
+  return *p;
+}
+
+bool Domain::removePattern(int tag) {
+  bool removed = patterns_.erase(tag) > 0;
+  if (removed) touch();
+  return removed;
+}
+
+std::vector<Domain::ImposedValue> Domain::imposedValues(double time) const {
+  std::vector<ImposedValue> out;
+  for (const auto& sp : sps_) out.push_back({sp.nodeTag, sp.dof, sp.value});
+  for (const auto& [tag, p] : patterns_) {
+    const double f = p->factor(time);
+    for (const auto& sp : p->sps()) out.push_back({sp.nodeTag, sp.dof, f * sp.value});
+  }
+  return out;
+}
+
+int Domain::addRecorder(std::unique_ptr<Recorder> recorder) {
+  const int tag = nextRecorderTag_++;
+  recorders_.emplace(tag, std::move(recorder));
+  return tag;
+}
+
+bool Domain::removeRecorder(int tag) {
+  auto it = recorders_.find(tag);
+  if (it == recorders_.end()) return false;
+  it->second->close();
+  recorders_.erase(it);
+  return true;
+}
+
+void Domain::removeRecorders() {
+  for (auto& [tag, r] : recorders_) r->close();
+  recorders_.clear();
+}
+
+void Domain::record() {
+  for (auto& [tag, r] : recorders_) r->record(*this, currentTime_);
+}
+
+void Domain::flushRecorders() {
+  for (auto& [tag, r] : recorders_) r->flush();
+}
+
+void Domain::applyLoad(double time) {
+  currentTime_ = time;
+  for (auto& [tag, n] : nodes_) n->zeroUnbalancedLoad();
+  for (auto& [tag, e] : elements_) e->zeroLoad();
+  for (auto& [tag, p] : patterns_) p->applyLoad(*this, time);
+}
+
+void Domain::update() {
+  for (auto& [tag, e] : elements_) e->update();
+}
+
+void Domain::commit() {
+  for (auto& [tag, n] : nodes_) n->commitState();
+  for (auto& [tag, e] : elements_) e->commitState();
+  committedTime_ = currentTime_;
+  record();
+}
+
+void Domain::revertToLastCommit() {
+  for (auto& [tag, n] : nodes_) n->revertToLastCommit();
+  for (auto& [tag, e] : elements_) e->revertToLastCommit();
+  currentTime_ = committedTime_;
+  applyLoad(currentTime_);
+  update();
+}
+
+void Domain::revertToStart() {
+  for (auto& [tag, n] : nodes_) n->revertToStart();
+  for (auto& [tag, e] : elements_) e->revertToStart();
+  currentTime_ = committedTime_ = 0.0;
+  applyLoad(0.0);
+  update();
+}
+
+void Domain::setLoadConst() {
+  for (auto& [tag, p] : patterns_) p->setLoadConst(currentTime_);
+}
+
+void Domain::calculateReactions() {
+  for (auto& [tag, n] : nodes_) {
+    n->zeroReaction();
+    n->addReaction(-n->unbalancedLoad());
+  }
+  for (auto& [tag, e] : elements_) {
+    VectorView f = e->resistingForce();
+    int offset = 0;
+    for (Node* n : e->nodes()) {
+      n->addReaction(f.segment(offset, n->ndf()));
+      offset += n->ndf();
+    }
+  }
+}
+
+bool Domain::needsGeneralSolver() const {
+  return std::any_of(elements_.begin(), elements_.end(),
+                     [](const auto& kv) { return kv.second->needsGeneralSolver(); });
+}
+
+}  // namespace beamsolid

@@ -1,0 +1,120 @@
+#pragma once
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "core/Constraints.h"
+#include "core/LoadPattern.h"
+#include "core/Node.h"
+#include "core/Recorder.h"
+#include "core/TaggedStore.h"
+#include "core/TimeSeries.h"
+#include "elements/Element.h"
+#include "elements/transforms/CrdTransf.h"
+#include "materials/nd/NDMaterial.h"
+#include "materials/uniaxial/UniaxialMaterial.h"
+
+namespace beamsolid {
+
+// The model and nothing about solving it: nodes, elements, constraints,
+// load patterns, recorders, and the definitions (materials, transforms,
+// time series) that commands refer to by tag.
+class Domain {
+ public:
+  Domain();
+  ~Domain();
+
+  // --- nodes and elements -------------------------------------------------
+  void addNode(std::unique_ptr<Node> node, const std::string& context);
+  Node* findNode(int tag) const;
+  Node& node(int tag, const std::string& context) const;
+  const std::map<int, std::unique_ptr<Node>>& nodes() const { return nodes_; }
+  void removeNode(int tag, const std::string& context);
+
+  // Connects the element (resolving its nodes) and adds it.
+  void addElement(std::unique_ptr<Element> element, const std::string& context);
+  Element* findElement(int tag) const;
+  Element& element(int tag, const std::string& context) const;
+  const std::map<int, std::unique_ptr<Element>>& elements() const { return elements_; }
+  void removeElement(int tag, const std::string& context);
+
+  // --- constraints ----------------------------------------------------------
+  // Homogeneous or fixed-value constraints from fix/fixX/...; an existing
+  // constraint on the same dof is an error.
+  void addSP(const SPConstraint& sp, const std::string& context);
+  bool removeSP(int nodeTag, int dof);
+  const std::vector<SPConstraint>& sps() const { return sps_; }
+  void addMP(MPConstraint mp, const std::string& context);
+  bool removeMP(int constrainedNode);
+  const std::vector<MPConstraint>& mps() const { return mps_; }
+
+  // --- load patterns ----------------------------------------------------------
+  void addPattern(std::unique_ptr<LoadPattern> pattern, const std::string& context);
+  LoadPattern* findPattern(int tag) const;
+  LoadPattern& pattern(int tag, const std::string& context) const;
+  const std::map<int, std::unique_ptr<LoadPattern>>& patterns() const { return patterns_; }
+  bool removePattern(int tag);
+  // Every imposed-displacement SP of the patterns, with its current value.
+  struct ImposedValue {
+    int nodeTag;
+    int dof;
+    double value;
+  };
+  std::vector<ImposedValue> imposedValues(double time) const;
+
+  // --- definitions referred to by tag ---------------------------------------
+  TaggedStore<UniaxialMaterial> uniaxialMaterials{"uniaxialMaterial"};
+  TaggedStore<NDMaterial> ndMaterials{"nDMaterial"};
+  TaggedStore<CrdTransf> geomTransfs{"geomTransf"};
+  TaggedStore<TimeSeries> timeSeries{"timeSeries"};
+
+  // --- recorders ---------------------------------------------------------------
+  int addRecorder(std::unique_ptr<Recorder> recorder);
+  bool removeRecorder(int tag);
+  void removeRecorders();
+  const std::map<int, std::unique_ptr<Recorder>>& recorders() const { return recorders_; }
+  void record();
+  void flushRecorders();
+
+  // --- state ---------------------------------------------------------------------
+  double currentTime() const { return currentTime_; }
+  double committedTime() const { return committedTime_; }
+  void setCurrentTime(double t) { currentTime_ = t; }
+  void setCommittedTime(double t) { committedTime_ = t; }
+
+  // Nodal loads and element loads of all patterns at time t.
+  void applyLoad(double time);
+  // Elements read the nodes' trial displacements.
+  void update();
+  // Nodes, elements and materials commit; recorders record.
+  void commit();
+  void revertToLastCommit();
+  void revertToStart();
+  // loadConst: every existing pattern keeps its current factor.
+  void setLoadConst();
+  // Reactions: element resisting forces minus applied nodal loads.
+  void calculateReactions();
+
+  // Incremented whenever nodes, elements or constraints change, so the
+  // analysis knows to renumber and rebuild its sparsity pattern.
+  long modelStamp() const { return modelStamp_; }
+  void touch() { ++modelStamp_; }
+
+  // Whether any element needs a general (non-SPD) solver.
+  bool needsGeneralSolver() const;
+
+ private:
+  std::map<int, std::unique_ptr<Node>> nodes_;
+  std::map<int, std::unique_ptr<Element>> elements_;
+  std::vector<SPConstraint> sps_;
+  std::vector<MPConstraint> mps_;
+  std::map<int, std::unique_ptr<LoadPattern>> patterns_;
+  std::map<int, std::unique_ptr<Recorder>> recorders_;
+  int nextRecorderTag_ = 0;
+  int nextMPTag_ = 0;
+  double currentTime_ = 0.0;
+  double committedTime_ = 0.0;
+  long modelStamp_ = 0;
+};
+
+}  // namespace beamsolid

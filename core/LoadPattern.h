@@ -1,0 +1,62 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/Constraints.h"
+#include "core/ElementLoad.h"
+#include "core/TimeSeries.h"
+#include "core/Types.h"
+
+namespace beamsolid {
+
+class Domain;
+
+// Plain load pattern: nodal loads, element loads and imposed displacements,
+// all scaled by one time series. loadConst freezes its factor.
+class LoadPattern {
+ public:
+  LoadPattern(int tag, std::shared_ptr<TimeSeries> series, double scale = 1.0);
+
+  int tag() const { return tag_; }
+  const TimeSeries& series() const { return *series_; }
+
+  struct NodalLoad {
+    int nodeTag;
+    Vector load;
+  };
+  struct EleLoad {
+    int elementTag;
+    ElementLoad load;
+  };
+
+  void addNodalLoad(int nodeTag, Vector load) { nodalLoads_.push_back({nodeTag, std::move(load)}); }
+  void addElementLoad(int elementTag, ElementLoad load) { elementLoads_.push_back({elementTag, std::move(load)}); }
+  void addSP(SPConstraint sp) { sps_.push_back(sp); }
+  bool removeSP(int nodeTag, int dof);
+
+  const std::vector<NodalLoad>& nodalLoads() const { return nodalLoads_; }
+  const std::vector<EleLoad>& elementLoads() const { return elementLoads_; }
+  const std::vector<SPConstraint>& sps() const { return sps_; }
+
+  double factor(double time) const;
+  double factorSlope(double time) const;
+  void setLoadConst(double time);
+  bool isConstant() const { return constant_; }
+
+  // Adds factor(time) * loads to nodes and elements of the domain.
+  void applyLoad(Domain& domain, double time) const;
+  // Adds slope(time) * nodal loads to `out` via the callback (reference load).
+  void removeReferencesTo(int nodeTag, int elementTag);
+
+ private:
+  int tag_;
+  std::shared_ptr<TimeSeries> series_;
+  double scale_;
+  bool constant_ = false;
+  double constFactor_ = 0.0;
+  std::vector<NodalLoad> nodalLoads_;
+  std::vector<EleLoad> elementLoads_;
+  std::vector<SPConstraint> sps_;
+};
+
+}  // namespace beamsolid

@@ -1,0 +1,91 @@
+#pragma once
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/ElementLoad.h"
+#include "core/Response.h"
+#include "core/Types.h"
+
+namespace beamsolid {
+
+class Domain;
+class Node;
+
+// An element knows its nodes, reads their trial displacements in update(),
+// and answers stiffness, resisting force and mass in its own dof order
+// (node by node, all dofs of each node). It never touches the global system.
+class Element {
+ public:
+  Element(int tag, std::vector<int> nodeTags);
+  virtual ~Element() = default;
+  Element(const Element&) = delete;
+  Element& operator=(const Element&) = delete;
+
+  int tag() const { return tag_; }
+  virtual std::string className() const = 0;
+
+  const std::vector<int>& nodeTags() const { return nodeTags_; }
+  const std::vector<Node*>& nodes() const { return nodes_; }
+  // Sum of the ndf of the element's nodes: the size of its matrices.
+  int numDOF() const { return numDOF_; }
+
+  // Resolves node tags against the domain (clear error for a missing node)
+  // and then calls setDomain() for element-specific checks and set-up.
+  void connect(Domain& domain);
+
+  // Reads trial displacements of the nodes and updates element state.
+  virtual void update() = 0;
+  virtual MatrixView tangentStiff() = 0;
+  virtual MatrixView initialStiff() = 0;
+  // Internal force minus element loads, in element dof order.
+  virtual VectorView resistingForce() = 0;
+  // Consistent or lumped mass; zero by default.
+  virtual MatrixView massMatrix();
+
+  virtual void commitState() {}
+  virtual void revertToLastCommit() {}
+  virtual void revertToStart() {}
+
+  // Element loads of load patterns (eleLoad); zeroLoad() is called before
+  // each applyLoad. Elements that take no load throw a clear error.
+  virtual void zeroLoad() {}
+  virtual void addLoad(const ElementLoad& load, double factor);
+  // Whether this element accepts this kind of load (checked at eleLoad time).
+  virtual bool acceptsLoad(ElementLoad::Type) const { return false; }
+
+  // Response for eleResponse and Element recorders; an empty Response when
+  // the arguments name nothing this element has.
+  virtual Response setResponse(const std::vector<std::string>& args);
+
+  // setParameter('-val', v, '-ele', tag, *args): true when recognized.
+  virtual bool setParameter(const std::vector<std::string>& args, double value);
+  // updateMaterialStage('-material', matTag, '-stage', s): forwarded to
+  // every element, which passes it to its copies of material matTag.
+  virtual void updateMaterialStage(int materialTag, int stage);
+
+  // Solver needs: a tangent that is unsymmetric, or has zero diagonal
+  // entries (Lagrange multipliers), cannot go to an SPD-only solver.
+  virtual bool needsGeneralSolver() const { return false; }
+
+  // Readable one-element description for printModel, and a JSON object.
+  virtual void print(std::ostream& os) const;
+  virtual void printJSON(std::ostream& os) const;
+
+ protected:
+  // Element-specific set-up once the nodes are known; throw OpenSeesError
+  // naming the element (e.g. wrong ndf, zero length).
+  virtual void setDomain(Domain&) {}
+  // "element <className> <tag>", the prefix of this element's messages.
+  std::string context() const;
+
+ private:
+  int tag_;
+  std::vector<int> nodeTags_;
+  std::vector<Node*> nodes_;
+  int numDOF_ = 0;
+  Matrix zeroMass_;
+};
+
+}  // namespace beamsolid
