@@ -1,2 +1,95 @@
+// The pybind11 module: the only C++ that knows Python.
 #include <pybind11/pybind11.h>
-PYBIND11_MODULE(_beamsolid, m) { m.doc() = "BeamSolid"; }
+#include <pybind11/stl.h>
+
+#include "bindings/Interpreter.h"
+#include "core/OpenSeesError.h"
+#include "core/Registry.h"
+
+namespace py = pybind11;
+using beamsolid::CommandArgs;
+using beamsolid::Interpreter;
+using beamsolid::OpenSeesError;
+
+namespace {
+
+// Python arguments -> command values. bool/int/numpy integers -> integer,
+// float/numpy floats -> number, str -> string; anything else is an error
+// naming the command and the position.
+std::vector<CommandArgs::Value> convertArgs(const std::string& command, const py::args& args) {
+  std::vector<CommandArgs::Value> values;
+  values.reserve(args.size());
+  std::size_t i = 0;
+  for (const py::handle& h : args) {
+    ++i;
+    if (py::isinstance<py::str>(h)) {
+      values.emplace_back(h.cast<std::string>());
+    } else if (py::isinstance<py::bool_>(h)) {
+      values.emplace_back(static_cast<long long>(h.cast<bool>()));
+    } else if (py::isinstance<py::int_>(h) || py::hasattr(h, "__index__")) {
+      try {
+        values.emplace_back(py::int_(py::reinterpret_borrow<py::object>(h)).cast<long long>());
+      } catch (const py::error_already_set&) {
+        throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
+      } catch (const py::cast_error&) {
+        throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
+      }
+    } else if (py::isinstance<py::float_>(h) || py::hasattr(h, "__float__")) {
+      values.emplace_back(py::float_(py::reinterpret_borrow<py::object>(h)).cast<double>());
+    } else {
+      const std::string type = py::str(py::type::of(h).attr("__name__"));
+      throw OpenSeesError(command + ": argument " + std::to_string(i) + ": expected a number or a string, got " +
+                          type + (type == "list" || type == "tuple" ? " (unpack it with *)" : ""));
+    }
+  }
+  return values;
+}
+
+py::object toPython(const Interpreter::Result& r) {
+  return std::visit(
+      [](const auto& v) -> py::object {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>) return py::none();
+        else return py::cast(v);
+      },
+      r);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_beamsolid, m) {
+  m.doc() = "BeamSolid: OpenSees-style finite elements with beam-solid contact";
+  py::register_exception<OpenSeesError>(m, "OpenSeesError", PyExc_RuntimeError);
+
+  py::class_<Interpreter>(m, "Interpreter")
+      .def(py::init<>())
+      .def(
+          "call",
+          [](Interpreter& self, const std::string& name, const py::args& args) {
+            auto values = convertArgs(name, args);
+            // The GIL stays held: one model is never entered by two threads at once.
+            return toPython(self.call(name, std::move(values)));
+          },
+          py::arg("name"))
+      .def("close_recorders", &Interpreter::closeRecorders);
+
+  m.def("command_names", &Interpreter::commandNames);
+  m.def("registered_types", [](const std::string& kind) {
+    auto& r = beamsolid::Registry::global();
+    if (kind == "element") return r.elements.types();
+    if (kind == "uniaxialMaterial") return r.uniaxialMaterials.types();
+    if (kind == "nDMaterial") return r.ndMaterials.types();
+    if (kind == "geomTransf") return r.geomTransfs.types();
+    if (kind == "timeSeries") return r.timeSeries.types();
+    if (kind == "recorder") return r.recorders.types();
+    if (kind == "constraints") return r.constraintHandlers.types();
+    if (kind == "numberer") return r.numberers.types();
+    if (kind == "system") return r.systems.types();
+    if (kind == "test") return r.tests.types();
+    if (kind == "algorithm") return r.algorithms.types();
+    if (kind == "integrator") return r.integrators.types();
+    if (kind == "section") return r.sections.types();
+    if (kind == "beamIntegration") return r.beamIntegrations.types();
+    throw OpenSeesError("registered_types: unknown kind '" + kind + "'");
+  });
+}

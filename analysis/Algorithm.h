@@ -1,0 +1,26 @@
+#pragma once
+#include <string>
+
+namespace beamsolid {
+
+class AnalysisModel;
+class ConvergenceTest;
+class Integrator;
+
+// Drives the iterations of one step (OpenSees' SolutionAlgorithm).
+class Algorithm {
+ public:
+  virtual ~Algorithm() = default;
+  virtual std::string name() const = 0;
+  // 0 when the step converged, negative otherwise; lastError() says why.
+  virtual int solveCurrentStep(AnalysisModel& model, Integrator& integrator, ConvergenceTest& test) = 0;
+  const std::string& lastError() const { return lastError_; }
+  // True when the last failure was a singular matrix (not slow convergence).
+  bool failedOnSingularMatrix() const { return singular_; }
+
+ protected:
+  std::string lastError_;
+  bool singular_ = false;
+};
+
+}  // namespace beamsolid

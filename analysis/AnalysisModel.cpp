@@ -1,0 +1,195 @@
+#include "analysis/AnalysisModel.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "analysis/ConstraintHandler.h"
+#include "core/Domain.h"
+#include "core/OpenSeesError.h"
+
+namespace beamsolid {
+
+bool AnalysisModel::setup(const ConstraintHandler& handler, const Numberer& numberer, LinearSolver& solver) {
+  const bool rebuild = builtStamp_ != domain_.modelStamp() || builtHandler_ != &handler || builtNumberer_ != &numberer;
+  if (solver.requiresSPD() && domain_.needsGeneralSolver()) {
+    std::string who;
+    for (const auto& [tag, e] : domain_.elements())
+      if (e->needsGeneralSolver()) {
+        who = e->className() + " " + std::to_string(tag);
+        break;
+      }
+    throw OpenSeesError("system " + solver.requestedName() + ": element " + who +
+                        " makes the system unsymmetric or indefinite (contact multipliers, sliding friction); "
+                        "the SPD-only solver CHOLMOD cannot factor it: use system('UmfPack')");
+  }
+  if (rebuild) {
+    map_.build(domain_, handler, numberer);
+    system_.setPattern(map_);
+    builtStamp_ = domain_.modelStamp();
+    builtHandler_ = &handler;
+    builtNumberer_ = &numberer;
+    imposedValues_.assign(map_.imposedFullDofs().size(), 0.0);
+  }
+  penaltyAlphaS_ = handler.alphaS();
+  penaltyAlphaM_ = handler.alphaM();
+  system_.setSolver(&solver);
+  return rebuild;
+}
+
+void AnalysisModel::scatterElementMatrix(std::vector<double>& values, int e, const double* k) const {
+  const DofMap::ElementMap& m = map_.elementMaps()[e];
+  if (m.simple) {
+    const int* pos = map_.scatterPositions(e);
+    const int nn = m.numDOF * m.numDOF;
+    for (int i = 0; i < nn; ++i)
+      if (pos[i] >= 0) values[pos[i]] += k[i];
+  } else {
+    for (auto* s = map_.generalScatterBegin(e); s != map_.generalScatterEnd(e); ++s)
+      values[s->position] += s->coefficient * k[s->local];
+  }
+}
+
+void AnalysisModel::formTangent(Stiffness which) {
+  system_.zeroA();
+  system_.invalidateFactor();
+  auto& values = system_.values();
+  const auto& elements = map_.elements();
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    MatrixView k = which == Stiffness::Initial ? elements[e]->initialStiff() : elements[e]->tangentStiff();
+    scatterElementMatrix(values, e, k.data());
+  }
+  // Penalty springs (only present with the Penalty handler).
+  for (const auto& sp : map_.penaltySPs()) values[sp.diagPosition] += penaltyAlphaS_;
+  for (const auto& mp : map_.penaltyMPs()) {
+    int k = 0;
+    for (const auto& b : mp.row)
+      for (const auto& a : mp.row) values[mp.positions[k++]] += penaltyAlphaM_ * a.coefficient * b.coefficient;
+  }
+  factoredKind_ = int(which);
+}
+
+void AnalysisModel::assembleMass(std::vector<double>& values) const {
+  values.assign(map_.rowIndex().size(), 0.0);
+  const auto& elements = map_.elements();
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    MatrixView m = elements[e]->massMatrix();
+    scatterElementMatrix(values, e, m.data());
+  }
+  for (int f = 0; f < map_.numFullDofs(); ++f) {
+    const double m = map_.nodeOfFull(f)->mass()[map_.dofOfFull(f)];
+    if (m == 0.0) continue;
+    for (auto* a = map_.fullTermsBegin(f); a != map_.fullTermsEnd(f); ++a)
+      for (auto* b = map_.fullTermsBegin(f); b != map_.fullTermsEnd(f); ++b)
+        values[map_.position(a->equation, b->equation)] += m * a->coefficient * b->coefficient;
+  }
+}
+
+void AnalysisModel::formUnbalance() {
+  Vector& b = system_.b();
+  b.setZero();
+  for (int f = 0; f < map_.numFullDofs(); ++f) {
+    const double p = map_.nodeOfFull(f)->unbalancedLoad()[map_.dofOfFull(f)];
+    if (p == 0.0) continue;
+    for (auto* t = map_.fullTermsBegin(f); t != map_.fullTermsEnd(f); ++t) b[t->equation] += t->coefficient * p;
+  }
+  const auto& elements = map_.elements();
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    VectorView force = elements[e]->resistingForce();
+    const int n = map_.elementMaps()[e].numDOF;
+    for (int i = 0; i < n; ++i)
+      for (auto* t = map_.elementTermsBegin(e, i); t != map_.elementTermsEnd(e, i); ++t)
+        b[t->equation] -= t->coefficient * force[i];
+  }
+  if (!map_.penaltySPs().empty()) {
+    const auto imposed = domain_.imposedValues(domain_.currentTime());
+    for (std::size_t i = 0; i < map_.penaltySPs().size(); ++i) {
+      const auto& sp = map_.penaltySPs()[i];
+      const double u = map_.nodeOfFull(sp.full)->trialDisp()[map_.dofOfFull(sp.full)];
+      b[sp.equation] += penaltyAlphaS_ * (imposed[i].value - u);
+    }
+  }
+  for (const auto& mp : map_.penaltyMPs()) {
+    double g = 0.0;
+    for (const auto& a : mp.row) g += a.coefficient * map_.nodeOfFull(a.full)->trialDisp()[map_.dofOfFull(a.full)];
+    for (const auto& a : mp.row) b[a.equation] -= penaltyAlphaM_ * a.coefficient * g;
+  }
+}
+
+void AnalysisModel::formReferenceLoad(Vector& out) const {
+  out = Vector::Zero(numEquations());
+  const double t = domain_.currentTime();
+  for (const auto& [tag, pattern] : domain_.patterns()) {
+    const double slope = pattern->factorSlope(t);
+    if (slope == 0.0) continue;
+    for (const auto& nl : pattern->nodalLoads()) {
+      const int start = map_.fullStartOfNode(nl.nodeTag);
+      if (start < 0) continue;
+      for (int d = 0; d < nl.load.size(); ++d)
+        for (auto* term = map_.fullTermsBegin(start + d); term != map_.fullTermsEnd(start + d); ++term)
+          out[term->equation] += slope * term->coefficient * nl.load[d];
+    }
+  }
+}
+
+void AnalysisModel::applyIncrement(const Vector& dU) {
+  for (int f = 0; f < map_.numFullDofs(); ++f) {
+    double du = 0.0;
+    for (auto* t = map_.fullTermsBegin(f); t != map_.fullTermsEnd(f); ++t) du += t->coefficient * dU[t->equation];
+    if (du != 0.0) map_.nodeOfFull(f)->incrTrialDisp(map_.dofOfFull(f), du);
+  }
+  domain_.update();
+}
+
+void AnalysisModel::enforcePrescribed() {
+  if (!map_.penaltySPs().empty()) return;  // penalty: values enter through the springs
+  const auto imposed = domain_.imposedValues(domain_.currentTime());
+  const auto& full = map_.imposedFullDofs();
+  for (std::size_t i = 0; i < full.size() && i < imposed.size(); ++i)
+    map_.nodeOfFull(full[i])->setTrialDisp(map_.dofOfFull(full[i]), imposed[i].value);
+  for (const auto& d : map_.dependents()) {
+    double u = 0.0;
+    for (const auto& [src, c] : d.sources) u += c * map_.nodeOfFull(src)->trialDisp()[map_.dofOfFull(src)];
+    map_.nodeOfFull(d.full)->setTrialDisp(map_.dofOfFull(d.full), u);
+  }
+}
+
+void AnalysisModel::trialDisplacement(Vector& out) const {
+  out = Vector::Zero(numEquations());
+  for (int f = 0; f < map_.numFullDofs(); ++f) {
+    auto* t = map_.fullTermsBegin(f);
+    if (map_.fullTermsEnd(f) - t == 1 && t->coefficient == 1.0)
+      out[t->equation] = map_.nodeOfFull(f)->trialDisp()[map_.dofOfFull(f)];
+  }
+}
+
+bool AnalysisModel::factor(Stiffness which) {
+  (void)which;
+  return system_.factor();
+}
+
+std::string AnalysisModel::describeFactorFailure() const {
+  std::ostringstream os;
+  const LinearSolver* solver = system_.solver();
+  os << (solver ? solver->lastError() : std::string("the matrix is singular"));
+  // Equations with no stiffness at all are the usual cause: an unrestrained dof.
+  const auto& values = system_.values();
+  const auto& diag = map_.diagonalPosition();
+  std::vector<int> zero;
+  for (int eq = 0; eq < numEquations(); ++eq)
+    if (values[diag[eq]] == 0.0) zero.push_back(eq);
+  if (!zero.empty()) {
+    os << "; no stiffness at";
+    for (std::size_t i = 0; i < zero.size() && i < 5; ++i) {
+      auto [node, dof] = map_.nodeDofOfEquation(zero[i]);
+      os << (i ? ", " : " ") << "node " << node << " dof " << dof + 1;
+    }
+    if (zero.size() > 5) os << " and " << zero.size() - 5 << " more";
+  } else if (solver && solver->failedEquation() >= 0 && solver->failedEquation() < numEquations()) {
+    auto [node, dof] = map_.nodeDofOfEquation(solver->failedEquation());
+    os << " (breakdown at node " << node << " dof " << dof + 1 << ")";
+  }
+  os << ": check the boundary conditions (fix) and connectivity, or the system type";
+  return os.str();
+}
+
+}  // namespace beamsolid

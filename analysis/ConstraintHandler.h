@@ -1,0 +1,28 @@
+#pragma once
+#include <string>
+
+namespace beamsolid {
+
+// How single- and multi-point constraints enter the equations.
+// Plain and Transformation eliminate constrained dofs (u = T u_free + g);
+// Penalty keeps every dof and adds alphaS / alphaM springs.
+class ConstraintHandler {
+ public:
+  enum class Method { Plain, Transformation, Penalty };
+
+  ConstraintHandler(Method method, double alphaS = 0.0, double alphaM = 0.0)
+      : method_(method), alphaS_(alphaS), alphaM_(alphaM) {}
+
+  Method method() const { return method_; }
+  bool eliminates() const { return method_ != Method::Penalty; }
+  double alphaS() const { return alphaS_; }
+  double alphaM() const { return alphaM_; }
+  std::string name() const;
+
+ private:
+  Method method_;
+  double alphaS_;
+  double alphaM_;
+};
+
+}  // namespace beamsolid

@@ -1,0 +1,44 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/Types.h"
+
+namespace beamsolid {
+
+class LinearSystem;
+
+// Decides after each iteration whether a step has converged, and records
+// the norm of every iteration (testNorm) so rates can be read back.
+class ConvergenceTest {
+ public:
+  enum class Result { Converged, Continue, Failed };
+
+  ConvergenceTest(double tolerance, int maxIterations, int printFlag, int normType)
+      : tolerance_(tolerance), maxIterations_(maxIterations), printFlag_(printFlag), normType_(normType) {}
+  virtual ~ConvergenceTest() = default;
+  virtual std::string name() const = 0;
+
+  // Called once per step after the first residual is formed.
+  virtual void start(const LinearSystem& system);
+  // Called after every update: b holds the new residual, x the increment just applied.
+  Result test(const LinearSystem& system);
+
+  int numIterations() const { return iteration_; }
+  const std::vector<double>& norms() const { return norms_; }
+  double tolerance() const { return tolerance_; }
+  int maxIterations() const { return maxIterations_; }
+
+ protected:
+  virtual double measure(const LinearSystem& system) = 0;
+  double norm(const Vector& v) const;
+
+  double tolerance_;
+  int maxIterations_;
+  int printFlag_;
+  int normType_;
+  int iteration_ = 0;
+  std::vector<double> norms_;
+};
+
+}  // namespace beamsolid

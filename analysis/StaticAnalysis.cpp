@@ -1,0 +1,47 @@
+#include "analysis/StaticAnalysis.h"
+
+#include <iostream>
+
+#include "core/Domain.h"
+#include "core/OpenSeesError.h"
+
+namespace beamsolid {
+
+StaticAnalysis::StaticAnalysis(Domain& domain, AnalysisComponents& components)
+    : domain_(domain), components_(components), model_(domain) {}
+
+int StaticAnalysis::analyze(int numSteps) {
+  AnalysisComponents& c = components_;
+  for (int step = 0; step < numSteps; ++step) {
+    if (model_.setup(*c.handler, *c.numberer, *c.solver)) {
+      c.integrator->domainChanged(model_);
+      stepsSinceSetup_ = 0;
+    }
+    if (c.integrator->newStep(model_) < 0) {
+      lastError_ = c.integrator->name() + ": could not start the step";
+      domain_.revertToLastCommit();
+      c.integrator->revert(model_);
+      return -2;
+    }
+    if (c.algorithm->solveCurrentStep(model_, *c.integrator, *c.test) < 0) {
+      lastError_ = c.algorithm->name() + " at time " + std::to_string(domain_.currentTime()) + ": " +
+                   c.algorithm->lastError();
+      const bool singularModel = c.algorithm->failedOnSingularMatrix() && stepsSinceSetup_ == 0 &&
+                                 domain_.committedTime() == 0.0;
+      domain_.revertToLastCommit();
+      c.integrator->revert(model_);
+      // A model that is singular before any step converged is a modelling
+      // error, not a convergence failure: say so loudly.
+      if (singularModel) throw OpenSeesError("analyze: the stiffness matrix is singular: " + c.algorithm->lastError());
+      std::cerr << "WARNING analyze: step failed: " << lastError_ << "; the model is back at time "
+                << domain_.currentTime() << "\n";
+      return -3;
+    }
+    c.integrator->commit(model_, c.test->numIterations());
+    domain_.commit();
+    ++stepsSinceSetup_;
+  }
+  return 0;
+}
+
+}  // namespace beamsolid

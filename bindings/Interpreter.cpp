@@ -1,0 +1,111 @@
+#include "bindings/Interpreter.h"
+
+#include <exception>
+
+#include "core/OpenSeesError.h"
+
+namespace beamsolid {
+
+Interpreter::Interpreter() : domain_(std::make_unique<Domain>()) {}
+
+Interpreter::~Interpreter() = default;
+
+const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
+  static const std::map<std::string, Command> table = {
+      {"wipe", &Interpreter::wipe},
+      {"model", &Interpreter::model},
+      {"node", &Interpreter::node},
+      {"fix", &Interpreter::fix},
+      {"fixX", &Interpreter::fixX},
+      {"fixY", &Interpreter::fixY},
+      {"fixZ", &Interpreter::fixZ},
+      {"equalDOF", &Interpreter::equalDOF},
+      {"rigidLink", &Interpreter::rigidLink},
+      {"mass", &Interpreter::mass},
+      {"uniaxialMaterial", &Interpreter::uniaxialMaterial},
+      {"nDMaterial", &Interpreter::nDMaterial},
+      {"geomTransf", &Interpreter::geomTransf},
+      {"element", &Interpreter::element},
+      {"timeSeries", &Interpreter::timeSeries},
+      {"pattern", &Interpreter::pattern},
+      {"load", &Interpreter::load},
+      {"sp", &Interpreter::sp},
+      {"eleLoad", &Interpreter::eleLoad},
+      {"loadConst", &Interpreter::loadConst},
+      {"setTime", &Interpreter::setTime},
+      {"getTime", &Interpreter::getTime},
+      {"remove", &Interpreter::remove},
+      {"recorder", &Interpreter::recorder},
+      {"record", &Interpreter::record},
+      {"loadPlugin", &Interpreter::loadPlugin},
+      {"setParameter", &Interpreter::setParameter},
+      {"updateMaterialStage", &Interpreter::updateMaterialStage},
+      {"constraints", &Interpreter::constraints},
+      {"numberer", &Interpreter::numberer},
+      {"system", &Interpreter::system},
+      {"test", &Interpreter::test},
+      {"algorithm", &Interpreter::algorithm},
+      {"integrator", &Interpreter::integrator},
+      {"analysis", &Interpreter::analysis},
+      {"analyze", &Interpreter::analyze},
+      {"wipeAnalysis", &Interpreter::wipeAnalysis},
+      {"eigen", &Interpreter::eigen},
+      {"testIter", &Interpreter::testIter},
+      {"testNorm", &Interpreter::testNorm},
+      {"testNorms", &Interpreter::testNorm},
+      {"systemSize", &Interpreter::systemSize},
+      {"reactions", &Interpreter::reactions},
+      {"nodeDisp", &Interpreter::nodeDisp},
+      {"nodeVel", &Interpreter::nodeVel},
+      {"nodeAccel", &Interpreter::nodeAccel},
+      {"nodeCoord", &Interpreter::nodeCoord},
+      {"nodeReaction", &Interpreter::nodeReaction},
+      {"nodeUnbalance", &Interpreter::nodeUnbalance},
+      {"nodeMass", &Interpreter::nodeMass},
+      {"nodeEigenvector", &Interpreter::nodeEigenvector},
+      {"nodeDOFs", &Interpreter::nodeDOFs},
+      {"getNDF", &Interpreter::getNDF},
+      {"eleResponse", &Interpreter::eleResponse},
+      {"eleForce", &Interpreter::eleForce},
+      {"eleNodes", &Interpreter::eleNodes},
+      {"eleType", &Interpreter::eleType},
+      {"getNodeTags", &Interpreter::getNodeTags},
+      {"getEleTags", &Interpreter::getEleTags},
+      {"getLoadFactor", &Interpreter::getLoadFactor},
+      {"printModel", &Interpreter::printModel},
+      {"getEigenvalues", &Interpreter::getEigenvalues},
+  };
+  return table;
+}
+
+std::vector<std::string> Interpreter::commandNames() {
+  std::vector<std::string> names;
+  for (const auto& kv : commands()) names.push_back(kv.first);
+  return names;
+}
+
+Interpreter::Result Interpreter::call(const std::string& name, std::vector<CommandArgs::Value> values) {
+  auto it = commands().find(name);
+  if (it == commands().end()) throw OpenSeesError("unknown command '" + name + "'");
+  CommandArgs args(name, std::move(values));
+  try {
+    return (this->*(it->second))(args);
+  } catch (const OpenSeesError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // Anything else is our bug; it still must not take the interpreter down.
+    throw OpenSeesError(name + ": internal error: " + e.what());
+  }
+}
+
+void Interpreter::requireModel(CommandArgs& a) const {
+  if (ndm_ == 0) a.fail("no model: call model('basic', '-ndm', 3, '-ndf', ndf) first");
+}
+
+LoadPattern& Interpreter::currentPattern(CommandArgs& a) const {
+  LoadPattern* p = domain_->findPattern(currentPatternTag_);
+  if (!p) a.fail("no load pattern: call pattern('Plain', tag, tsTag) first");
+  return *p;
+}
+
+}  // namespace beamsolid

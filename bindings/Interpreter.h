@@ -1,0 +1,121 @@
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "analysis/StaticAnalysis.h"
+#include "core/CommandArgs.h"
+#include "core/Domain.h"
+
+namespace beamsolid {
+
+// The command interpreter behind beamsolid.opensees and beamsolid.Model:
+// one method per OpenSeesPy command, each reading its CommandArgs and
+// returning what OpenSeesPy returns (None, int, float, list or str).
+class Interpreter {
+ public:
+  using Result = std::variant<std::monostate, long long, double, std::string, std::vector<double>, std::vector<int>>;
+  using Command = Result (Interpreter::*)(CommandArgs&);
+
+  Interpreter();
+  ~Interpreter();
+
+  // Runs one command; every failure is an OpenSeesError naming the command.
+  Result call(const std::string& name, std::vector<CommandArgs::Value> args);
+  static std::vector<std::string> commandNames();
+
+  Domain& domain() { return *domain_; }
+  // Closes recorders (flushing them); used at interpreter exit.
+  void closeRecorders() { domain_->removeRecorders(); }
+
+ private:
+  static const std::map<std::string, Command>& commands();
+
+  // --- model building (InterpreterModel.cpp) ---
+  Result wipe(CommandArgs&);
+  Result model(CommandArgs&);
+  Result node(CommandArgs&);
+  Result fix(CommandArgs&);
+  Result fixX(CommandArgs&);
+  Result fixY(CommandArgs&);
+  Result fixZ(CommandArgs&);
+  Result fixCoordinate(CommandArgs&, int axis);
+  Result equalDOF(CommandArgs&);
+  Result rigidLink(CommandArgs&);
+  Result mass(CommandArgs&);
+  Result uniaxialMaterial(CommandArgs&);
+  Result nDMaterial(CommandArgs&);
+  Result geomTransf(CommandArgs&);
+  Result element(CommandArgs&);
+  Result timeSeries(CommandArgs&);
+  Result pattern(CommandArgs&);
+  Result load(CommandArgs&);
+  Result sp(CommandArgs&);
+  Result eleLoad(CommandArgs&);
+  Result loadConst(CommandArgs&);
+  Result setTime(CommandArgs&);
+  Result getTime(CommandArgs&);
+  Result remove(CommandArgs&);
+  Result recorder(CommandArgs&);
+  Result record(CommandArgs&);
+  Result loadPlugin(CommandArgs&);
+  Result setParameter(CommandArgs&);
+  Result updateMaterialStage(CommandArgs&);
+
+  // --- analysis (InterpreterAnalysis.cpp) ---
+  Result constraints(CommandArgs&);
+  Result numberer(CommandArgs&);
+  Result system(CommandArgs&);
+  Result test(CommandArgs&);
+  Result algorithm(CommandArgs&);
+  Result integrator(CommandArgs&);
+  Result analysis(CommandArgs&);
+  Result analyze(CommandArgs&);
+  Result wipeAnalysis(CommandArgs&);
+  Result eigen(CommandArgs&);
+  Result testIter(CommandArgs&);
+  Result testNorm(CommandArgs&);
+  Result systemSize(CommandArgs&);
+  Result reactions(CommandArgs&);
+
+  // --- queries (InterpreterQueries.cpp) ---
+  Result nodeDisp(CommandArgs&);
+  Result nodeVel(CommandArgs&);
+  Result nodeAccel(CommandArgs&);
+  Result nodeCoord(CommandArgs&);
+  Result nodeReaction(CommandArgs&);
+  Result nodeUnbalance(CommandArgs&);
+  Result nodeMass(CommandArgs&);
+  Result nodeEigenvector(CommandArgs&);
+  Result nodeDOFs(CommandArgs&);
+  Result getNDF(CommandArgs&);
+  Result eleResponse(CommandArgs&);
+  Result eleForce(CommandArgs&);
+  Result eleNodes(CommandArgs&);
+  Result eleType(CommandArgs&);
+  Result getNodeTags(CommandArgs&);
+  Result getEleTags(CommandArgs&);
+  Result getLoadFactor(CommandArgs&);
+  Result printModel(CommandArgs&);
+  Result getEigenvalues(CommandArgs&);
+
+  // Helpers
+  Result nodeVectorQuery(CommandArgs&, const char* what, const Vector& (Node::*get)() const);
+  void requireModel(CommandArgs& a) const;
+  LoadPattern& currentPattern(CommandArgs& a) const;
+  void ensureAnalysisDefaults();
+
+  std::unique_ptr<Domain> domain_;
+  int ndm_ = 0;
+  int ndf_ = 0;
+  int currentPatternTag_ = -1;
+  bool haveAnalysis_ = false;
+  AnalysisComponents components_;
+  std::unique_ptr<StaticAnalysis> analysis_;
+  std::vector<double> eigenvalues_;
+};
+
+}  // namespace beamsolid

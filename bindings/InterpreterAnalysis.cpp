@@ -1,0 +1,182 @@
+// Analysis commands of the Interpreter.
+#include <iostream>
+
+#include "analysis/EigenAnalysis.h"
+#include "bindings/Interpreter.h"
+#include "core/OpenSeesError.h"
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+using Result = Interpreter::Result;
+
+namespace {
+template <class Product, class Table>
+std::unique_ptr<Product> buildAnalysisObject(CommandArgs& a, Domain& domain, const Table& table) {
+  const std::string type = a.nextString("type");
+  if (!table.has(type)) {
+    std::string known;
+    for (const auto& t : table.types()) known += (known.empty() ? "" : ", ") + t;
+    a.fail("type '" + type + "' is unknown (known: " + known + ")");
+  }
+  a.setContext(a.command() + " " + type);
+  return table.get(type)(a, domain);
+}
+
+
+template <class Product, class Table>
+std::unique_ptr<Product> buildDefault(const Table& table, Domain& domain, const std::string& type,
+                                      std::vector<CommandArgs::Value> args) {
+  CommandArgs a("default", std::move(args));
+  return table.get(type)(a, domain);
+}
+}  // namespace
+
+Result Interpreter::constraints(CommandArgs& a) {
+  components_.handler = buildAnalysisObject<ConstraintHandler>(a, *domain_, Registry::global().constraintHandlers);
+  return {};
+}
+
+Result Interpreter::numberer(CommandArgs& a) {
+  components_.numberer = buildAnalysisObject<Numberer>(a, *domain_, Registry::global().numberers);
+  return {};
+}
+
+Result Interpreter::system(CommandArgs& a) {
+  components_.solver = buildAnalysisObject<LinearSolver>(a, *domain_, Registry::global().systems);
+  if (analysis_) analysis_->model().invalidate();
+  return {};
+}
+
+Result Interpreter::test(CommandArgs& a) {
+  components_.test = buildAnalysisObject<ConvergenceTest>(a, *domain_, Registry::global().tests);
+  return {};
+}
+
+Result Interpreter::algorithm(CommandArgs& a) {
+  components_.algorithm = buildAnalysisObject<Algorithm>(a, *domain_, Registry::global().algorithms);
+  return {};
+}
+
+Result Interpreter::integrator(CommandArgs& a) {
+  components_.integrator = buildAnalysisObject<Integrator>(a, *domain_, Registry::global().integrators);
+  if (analysis_) analysis_->model().invalidate();
+  return {};
+}
+
+// OpenSees' defaults for whatever the script did not choose.
+void Interpreter::ensureAnalysisDefaults() {
+  Registry& r = Registry::global();
+  if (!components_.handler) components_.handler = buildDefault<ConstraintHandler>(r.constraintHandlers, *domain_, "Plain", {});
+  if (!components_.numberer) components_.numberer = buildDefault<Numberer>(r.numberers, *domain_, "RCM", {});
+  if (!components_.solver)
+    components_.solver = buildDefault<LinearSolver>(r.systems, *domain_,
+                                                    domain_->needsGeneralSolver() ? "UmfPack" : "ProfileSPD", {});
+  if (!components_.test)
+    components_.test = buildDefault<ConvergenceTest>(r.tests, *domain_, "NormUnbalance", {1e-6, 25LL});
+  if (!components_.algorithm) components_.algorithm = buildDefault<Algorithm>(r.algorithms, *domain_, "Newton", {});
+  if (!components_.integrator)
+    components_.integrator = buildDefault<Integrator>(r.integrators, *domain_, "LoadControl", {1.0});
+}
+
+Result Interpreter::analysis(CommandArgs& a) {
+  const std::string type = a.nextString("type");
+  a.setContext("analysis " + type);
+  while (!a.done()) a.restAsStrings();
+  if (type == "Transient" || type == "VariableTransient")
+    a.fail("transient analysis is not available yet in BeamSolid (use 'Static')");
+  if (type != "Static") a.fail("analysis type '" + type + "' is unknown (expected 'Static')");
+  ensureAnalysisDefaults();
+  if (!components_.integrator->isStatic()) a.fail("integrator " + components_.integrator->name() + " is not static");
+  analysis_ = std::make_unique<StaticAnalysis>(*domain_, components_);
+  return {};
+}
+
+Result Interpreter::analyze(CommandArgs& a) {
+  const int n = a.nextInt("numIncr");
+  while (!a.done()) a.restAsStrings();  // dt, dtMin, ... of transient forms, '-noFlush'
+  if (!analysis_) a.fail("no analysis: call analysis('Static') first");
+  if (n < 0) a.fail("numIncr must be non-negative");
+  if (!components_.integrator->isStatic()) a.fail("integrator " + components_.integrator->name() + " is not static");
+  int code = 0;
+  try {
+    code = analysis_->analyze(n);
+  } catch (...) {
+    domain_->flushRecorders();
+    throw;
+  }
+  // Recorded data reaches the disk after every analyze, success or not.
+  domain_->flushRecorders();
+  return static_cast<long long>(code);
+}
+
+Result Interpreter::wipeAnalysis(CommandArgs& a) {
+  a.expectEnd();
+  analysis_.reset();
+  components_ = AnalysisComponents{};
+  return {};
+}
+
+Result Interpreter::eigen(CommandArgs& a) {
+  bool dense = false;
+  int numModes = 0;
+  while (!a.done()) {
+    if (a.nextIsString()) {
+      const std::string opt = a.nextString("solver");
+      if (opt == "-fullGenLapack") dense = true;
+      else if (opt == "-genBandArpack" || opt == "-symmBandLapack" || opt == "-standard" || opt == "-generalized") {}
+      else a.fail("unknown option '" + opt + "' (expected -fullGenLapack or -genBandArpack)");
+    } else {
+      numModes = a.nextInt("numEigenvalues");
+    }
+  }
+  if (numModes < 1) a.fail("the number of eigenvalues must be at least 1");
+  // Eigen runs on the model's own numbering; it needs a handler and a
+  // numberer, which it borrows from the analysis or creates by default.
+  Registry& r = Registry::global();
+  if (!components_.handler)
+    components_.handler = buildDefault<ConstraintHandler>(r.constraintHandlers, *domain_, "Transformation", {});
+  if (!components_.numberer) components_.numberer = buildDefault<Numberer>(r.numberers, *domain_, "RCM", {});
+  auto solver = buildDefault<LinearSolver>(r.systems, *domain_, "UmfPack", {});
+  AnalysisModel model(*domain_);
+  model.setup(*components_.handler, *components_.numberer, *solver);
+  if (numModes > model.numEquations())
+    a.fail("asked for " + std::to_string(numModes) + " eigenvalues but the model has only " +
+           std::to_string(model.numEquations()) + " equations");
+  eigenvalues_ = EigenAnalysis::solve(model, numModes, dense);
+  return eigenvalues_;
+}
+
+Result Interpreter::getEigenvalues(CommandArgs& a) {
+  a.expectEnd();
+  return eigenvalues_;
+}
+
+Result Interpreter::testIter(CommandArgs& a) {
+  a.expectEnd();
+  return static_cast<long long>(components_.test ? components_.test->numIterations() : 0);
+}
+
+Result Interpreter::testNorm(CommandArgs& a) {
+  a.expectEnd();
+  return components_.test ? components_.test->norms() : std::vector<double>{};
+}
+
+Result Interpreter::systemSize(CommandArgs& a) {
+  a.expectEnd();
+  if (!analysis_) return 0LL;
+  if (components_.handler && components_.numberer && components_.solver)
+    analysis_->model().setup(*components_.handler, *components_.numberer, *components_.solver);
+  return static_cast<long long>(analysis_->model().numEquations());
+}
+
+Result Interpreter::reactions(CommandArgs& a) {
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt != "-dynamic" && opt != "-rayleigh") a.fail("unknown option '" + opt + "'");
+  }
+  domain_->calculateReactions();
+  return {};
+}
+
+}  // namespace beamsolid

@@ -1,0 +1,475 @@
+// Model-building commands of the Interpreter.
+#include <cmath>
+#include <optional>
+
+#include "bindings/Interpreter.h"
+#include "core/OpenSeesError.h"
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+using Result = Interpreter::Result;
+
+Result Interpreter::wipe(CommandArgs& a) {
+  a.expectEnd();
+  domain_->removeRecorders();
+  analysis_.reset();
+  components_ = AnalysisComponents{};
+  haveAnalysis_ = false;
+  domain_ = std::make_unique<Domain>();
+  ndm_ = ndf_ = 0;
+  currentPatternTag_ = -1;
+  eigenvalues_.clear();
+  return {};
+}
+
+Result Interpreter::model(CommandArgs& a) {
+  const std::string type = a.nextString("type");
+  if (type != "basic" && type != "Basic" && type != "BasicBuilder")
+    a.fail("model type '" + type + "' is not supported (expected 'basic')");
+  int ndm = 0, ndf = 0;
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt == "-ndm") ndm = a.nextInt("ndm");
+    else if (opt == "-ndf") ndf = a.nextInt("ndf");
+    else a.fail("unknown option '" + opt + "' (expected -ndm or -ndf)");
+  }
+  if (ndm != 3) a.fail("-ndm " + std::to_string(ndm) + " is not supported: BeamSolid models are 3D (-ndm 3)");
+  if (ndf == 0) ndf = 6;
+  if (ndf != 3 && ndf != 6) a.fail("-ndf must be 3 or 6 in 3D, got " + std::to_string(ndf));
+  ndm_ = ndm;
+  ndf_ = ndf;
+  return {};
+}
+
+Result Interpreter::node(CommandArgs& a) {
+  requireModel(a);
+  const int tag = a.nextInt("nodeTag");
+  a.setContext("node " + std::to_string(tag));
+  Vector3 x;
+  for (int i = 0; i < 3; ++i) x[i] = a.nextDouble(i == 0 ? "x" : i == 1 ? "y" : "z");
+  int ndf = ndf_;
+  Vector mass, disp;
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt == "-ndf") {
+      ndf = a.nextInt("ndf");
+      if (ndf != 3 && ndf != 6) a.fail("-ndf must be 3 or 6, got " + std::to_string(ndf));
+    } else if (opt == "-mass") {
+      auto m = a.nextDoubles("mass", 1);
+      mass = Eigen::Map<Vector>(m.data(), m.size());
+    } else if (opt == "-disp") {
+      auto d = a.nextDoubles("disp", 1);
+      disp = Eigen::Map<Vector>(d.data(), d.size());
+    } else {
+      a.fail("unknown option '" + opt + "' (expected -ndf, -mass or -disp)");
+    }
+  }
+  auto n = std::make_unique<Node>(tag, ndf, x);
+  if (mass.size()) {
+    if (mass.size() != ndf) a.fail("-mass needs " + std::to_string(ndf) + " values, got " + std::to_string(mass.size()));
+    n->setMass(mass);
+  }
+  if (disp.size()) {
+    if (disp.size() != ndf) a.fail("-disp needs " + std::to_string(ndf) + " values, got " + std::to_string(disp.size()));
+    n->setTrialDisp(disp);
+    n->commitState();
+  }
+  domain_->addNode(std::move(n), a.context());
+  return {};
+}
+
+Result Interpreter::fix(CommandArgs& a) {
+  const int tag = a.nextInt("nodeTag");
+  a.setContext("fix " + std::to_string(tag));
+  Node& n = domain_->node(tag, a.context());
+  const auto flags = a.nextInts("constraint flags");
+  a.expectEnd();
+  if (static_cast<int>(flags.size()) != n.ndf())
+    a.fail("node " + std::to_string(tag) + " has " + std::to_string(n.ndf()) + " dofs but " +
+           std::to_string(flags.size()) + " flags were given");
+  for (int d = 0; d < n.ndf(); ++d) {
+    if (flags[d] != 0 && flags[d] != 1) a.fail("constraint flags must be 0 or 1, got " + std::to_string(flags[d]));
+    if (flags[d]) domain_->addSP(SPConstraint{tag, d, 0.0, -1}, a.context());
+  }
+  return {};
+}
+
+Result Interpreter::fixX(CommandArgs& a) { return fixCoordinate(a, 0); }
+Result Interpreter::fixY(CommandArgs& a) { return fixCoordinate(a, 1); }
+Result Interpreter::fixZ(CommandArgs& a) { return fixCoordinate(a, 2); }
+
+Result Interpreter::fixCoordinate(CommandArgs& a, int axis) {
+  const double coordinate = a.nextDouble("coordinate");
+  std::vector<int> flags;
+  double tol = 1e-10;
+  while (!a.done()) {
+    if (a.nextFlag("-tol")) tol = a.nextDouble("tol");
+    else flags.push_back(a.nextInt("constraint flag"));
+  }
+  if (flags.empty()) a.fail("no constraint flags given");
+  for (int f : flags)
+    if (f != 0 && f != 1) a.fail("constraint flags must be 0 or 1, got " + std::to_string(f));
+  int count = 0;
+  for (const auto& [tag, n] : domain_->nodes()) {
+    if (std::fabs(n->crd()[axis] - coordinate) > tol) continue;
+    ++count;
+    // Mixed models (beam nodes ndf 6, soil nodes ndf 3): flags beyond a
+    // node's ndf are ignored; a dof already fixed stays fixed.
+    for (int d = 0; d < n->ndf() && d < static_cast<int>(flags.size()); ++d) {
+      if (!flags[d]) continue;
+      bool already = false;
+      for (const auto& s : domain_->sps()) already = already || (s.nodeTag == tag && s.dof == d);
+      if (!already) domain_->addSP(SPConstraint{tag, d, 0.0, -1}, a.context());
+    }
+  }
+  (void)count;
+  return {};
+}
+
+Result Interpreter::equalDOF(CommandArgs& a) {
+  const int r = a.nextInt("retainedNode");
+  const int c = a.nextInt("constrainedNode");
+  a.setContext("equalDOF " + std::to_string(r) + " " + std::to_string(c));
+  const auto dofs = a.nextInts("dof", 1);
+  a.expectEnd();
+  MPConstraint mp;
+  mp.retainedNode = r;
+  mp.constrainedNode = c;
+  for (int d : dofs) {
+    mp.retainedDofs.push_back(d - 1);
+    mp.constrainedDofs.push_back(d - 1);
+  }
+  mp.C = Matrix::Identity(dofs.size(), dofs.size());
+  domain_->addMP(std::move(mp), a.context());
+  return {};
+}
+
+Result Interpreter::rigidLink(CommandArgs& a) {
+  const std::string type = a.nextString("type ('beam' or 'bar')");
+  const int r = a.nextInt("retainedNode");
+  const int c = a.nextInt("constrainedNode");
+  a.setContext("rigidLink " + type + " " + std::to_string(r) + " " + std::to_string(c));
+  a.expectEnd();
+  if (type != "beam" && type != "bar") a.fail("type must be 'beam' or 'bar', got '" + type + "'");
+  const Node& rn = domain_->node(r, a.context());
+  const Node& cn = domain_->node(c, a.context());
+  MPConstraint mp;
+  mp.kind = "rigidLink " + type;
+  mp.retainedNode = r;
+  mp.constrainedNode = c;
+  if (type == "bar") {
+    // Translations equal (small displacements).
+    for (int d = 0; d < 3; ++d) {
+      mp.retainedDofs.push_back(d);
+      mp.constrainedDofs.push_back(d);
+    }
+    mp.C = Matrix::Identity(3, 3);
+  } else {
+    if (rn.ndf() != 6) a.fail("the retained node of a rigid beam link needs 6 dofs (has " + std::to_string(rn.ndf()) + ")");
+    // u_c = u_r + theta_r x d, theta_c = theta_r, with d = X_c - X_r.
+    const Vector3 d = cn.crd() - rn.crd();
+    const int nc = cn.ndf() == 6 ? 6 : 3;
+    for (int k = 0; k < 6; ++k) mp.retainedDofs.push_back(k);
+    for (int k = 0; k < nc; ++k) mp.constrainedDofs.push_back(k);
+    mp.C = Matrix::Zero(nc, 6);
+    mp.C.block<3, 3>(0, 0).setIdentity();
+    Matrix3 skew;
+    skew << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
+    mp.C.block<3, 3>(0, 3) = -skew;  // theta x d = -d x theta
+    if (nc == 6) mp.C.block<3, 3>(3, 3).setIdentity();
+  }
+  domain_->addMP(std::move(mp), a.context());
+  return {};
+}
+
+Result Interpreter::mass(CommandArgs& a) {
+  const int tag = a.nextInt("nodeTag");
+  a.setContext("mass " + std::to_string(tag));
+  Node& n = domain_->node(tag, a.context());
+  auto m = a.nextDoubles("mass", 1);
+  a.expectEnd();
+  if (static_cast<int>(m.size()) != n.ndf())
+    a.fail("node " + std::to_string(tag) + " has " + std::to_string(n.ndf()) + " dofs but " + std::to_string(m.size()) +
+           " mass values were given");
+  n.setMass(Eigen::Map<Vector>(m.data(), m.size()));
+  return {};
+}
+
+namespace {
+// Parses "<command> <type> <tag> ..." through the registry table.
+template <class Product, class Table>
+std::unique_ptr<Product> build(CommandArgs& a, Domain& domain, const Table& table) {
+  const std::string type = a.nextString("type");
+  if (!table.has(type)) {
+    std::string known;
+    for (const auto& t : table.types()) known += (known.empty() ? "" : ", ") + t;
+    a.fail("type '" + type + "' is unknown (known: " + known + ")");
+  }
+  a.setContext(a.command() + " " + type);
+  return table.get(type)(a, domain);
+}
+}  // namespace
+
+Result Interpreter::uniaxialMaterial(CommandArgs& a) {
+  auto m = build<UniaxialMaterial>(a, *domain_, Registry::global().uniaxialMaterials);
+  domain_->uniaxialMaterials.add(m->tag(), std::move(m), a.context());
+  return {};
+}
+
+Result Interpreter::nDMaterial(CommandArgs& a) {
+  auto m = build<NDMaterial>(a, *domain_, Registry::global().ndMaterials);
+  domain_->ndMaterials.add(m->tag(), std::move(m), a.context());
+  return {};
+}
+
+Result Interpreter::geomTransf(CommandArgs& a) {
+  auto t = build<CrdTransf>(a, *domain_, Registry::global().geomTransfs);
+  domain_->geomTransfs.add(t->tag(), std::move(t), a.context());
+  return {};
+}
+
+Result Interpreter::timeSeries(CommandArgs& a) {
+  auto t = build<TimeSeries>(a, *domain_, Registry::global().timeSeries);
+  domain_->timeSeries.add(t->tag(), std::move(t), a.context());
+  return {};
+}
+
+Result Interpreter::element(CommandArgs& a) {
+  requireModel(a);
+  auto e = build<Element>(a, *domain_, Registry::global().elements);
+  domain_->addElement(std::move(e), a.context());
+  return {};
+}
+
+Result Interpreter::pattern(CommandArgs& a) {
+  const std::string type = a.nextString("type");
+  if (type != "Plain")
+    a.fail("pattern type '" + type + "' is not supported (expected 'Plain')");
+  const int tag = a.nextInt("patternTag");
+  a.setContext("pattern Plain " + std::to_string(tag));
+  const int seriesTag = a.nextInt("tsTag");
+  double factor = 1.0;
+  while (!a.done()) {
+    if (a.nextFlag("-fact") || a.nextFlag("-factor")) factor = a.nextDouble("factor");
+    else a.fail("unknown option " + CommandArgs::describe(a.at(a.position())) + " (expected -fact)");
+  }
+  auto series = domain_->timeSeries.shared(seriesTag, a.context());
+  domain_->addPattern(std::make_unique<LoadPattern>(tag, series, factor), a.context());
+  currentPatternTag_ = tag;
+  return {};
+}
+
+Result Interpreter::load(CommandArgs& a) {
+  const int tag = a.nextInt("nodeTag");
+  a.setContext("load " + std::to_string(tag));
+  const Node& n = domain_->node(tag, a.context());
+  auto values = a.nextDoubles("load", 1);
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt != "-const" && opt != "-pattern") a.fail("unknown option '" + opt + "'");
+    if (opt == "-pattern") currentPatternTag_ = a.nextInt("patternTag");
+  }
+  if (static_cast<int>(values.size()) != n.ndf())
+    a.fail("node " + std::to_string(tag) + " has " + std::to_string(n.ndf()) + " dofs but " +
+           std::to_string(values.size()) + " load values were given");
+  currentPattern(a).addNodalLoad(tag, Eigen::Map<Vector>(values.data(), values.size()));
+  return {};
+}
+
+Result Interpreter::sp(CommandArgs& a) {
+  const int tag = a.nextInt("nodeTag");
+  a.setContext("sp " + std::to_string(tag));
+  const int dof = a.nextInt("dof");
+  const double value = a.nextDouble("value");
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt != "-const" && opt != "-subtractInit") a.fail("unknown option '" + opt + "'");
+  }
+  const Node& n = domain_->node(tag, a.context());
+  if (dof < 1 || dof > n.ndf())
+    a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(n.ndf()));
+  for (const auto& s : domain_->sps())
+    if (s.nodeTag == tag && s.dof == dof - 1) a.fail("dof " + std::to_string(dof) + " is already fixed");
+  for (const auto& [ptag, p] : domain_->patterns())
+    for (const auto& s : p->sps())
+      if (s.nodeTag == tag && s.dof == dof - 1)
+        a.fail("dof " + std::to_string(dof) + " already has an sp in pattern " + std::to_string(ptag));
+  currentPattern(a).addSP(SPConstraint{tag, dof - 1, value, currentPatternTag_});
+  domain_->touch();
+  return {};
+}
+
+Result Interpreter::eleLoad(CommandArgs& a) {
+  std::vector<int> tags;
+  ElementLoad load;
+  bool haveType = false;
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt == "-ele") {
+      auto t = a.nextInts("element tag", 1);
+      tags.insert(tags.end(), t.begin(), t.end());
+    } else if (opt == "-range") {
+      const int from = a.nextInt("first element"), to = a.nextInt("last element");
+      for (const auto& [tag, e] : domain_->elements())
+        if (tag >= from && tag <= to) tags.push_back(tag);
+    } else if (opt == "-type") {
+      const std::string type = a.nextString("load type");
+      haveType = true;
+      if (type == "-beamUniform" || type == "beamUniform") {
+        load.type = ElementLoad::Type::BeamUniform;
+        load.values = a.nextDoubles("Wy, Wz, <Wx>", 2);
+        if (load.values.size() > 3) a.fail("-beamUniform takes Wy, Wz and optionally Wx");
+        load.values.resize(3, 0.0);
+      } else if (type == "-beamPoint" || type == "beamPoint") {
+        load.type = ElementLoad::Type::BeamPoint;
+        load.values = a.nextDoubles("Py, Pz, xL, <Px>", 3);
+        if (load.values.size() > 4) a.fail("-beamPoint takes Py, Pz, xL and optionally Px");
+        load.values.resize(4, 0.0);
+        if (load.values[2] < 0.0 || load.values[2] > 1.0) a.fail("-beamPoint xL must lie in [0, 1]");
+      } else if (type == "-selfWeight" || type == "selfWeight") {
+        load.type = ElementLoad::Type::SelfWeight;
+        load.values = a.nextDoubles("bx, by, bz", 3);
+        if (load.values.size() != 3) a.fail("-selfWeight takes bx, by, bz");
+      } else {
+        a.fail("unknown load type '" + type + "' (expected -beamUniform, -beamPoint or -selfWeight)");
+      }
+    } else {
+      a.fail("unknown option '" + opt + "' (expected -ele, -range or -type)");
+    }
+  }
+  if (!haveType) a.fail("missing '-type'");
+  if (tags.empty()) a.fail("no elements given (-ele tags or -range first last)");
+  LoadPattern& p = currentPattern(a);
+  for (int t : tags) {
+    Element& e = domain_->element(t, a.context());
+    if (!e.acceptsLoad(load.type))
+      a.fail("element " + e.className() + " " + std::to_string(t) + " does not accept " + ElementLoad::typeName(load.type));
+  }
+  for (int t : tags) p.addElementLoad(t, load);
+  return {};
+}
+
+Result Interpreter::loadConst(CommandArgs& a) {
+  std::optional<double> time;
+  while (!a.done()) {
+    if (a.nextFlag("-time")) time = a.nextDouble("time");
+    else a.fail("unknown option " + CommandArgs::describe(a.at(a.position())) + " (expected -time)");
+  }
+  domain_->setLoadConst();
+  if (time) {
+    domain_->setCurrentTime(*time);
+    domain_->setCommittedTime(*time);
+  }
+  return {};
+}
+
+Result Interpreter::setTime(CommandArgs& a) {
+  const double t = a.nextDouble("time");
+  a.expectEnd();
+  domain_->setCurrentTime(t);
+  domain_->setCommittedTime(t);
+  return {};
+}
+
+Result Interpreter::getTime(CommandArgs& a) {
+  a.expectEnd();
+  return domain_->currentTime();
+}
+
+Result Interpreter::remove(CommandArgs& a) {
+  const std::string what = a.nextString("what");
+  a.setContext("remove " + what);
+  if (what == "ele" || what == "element") {
+    const int tag = a.nextInt("eleTag");
+    domain_->removeElement(tag, a.context());
+  } else if (what == "node") {
+    const int tag = a.nextInt("nodeTag");
+    domain_->removeNode(tag, a.context());
+  } else if (what == "loadPattern" || what == "pattern") {
+    const int tag = a.nextInt("patternTag");
+    if (!domain_->removePattern(tag)) a.fail("load pattern " + std::to_string(tag) + " does not exist");
+  } else if (what == "recorder") {
+    const int tag = a.nextInt("recorderTag");
+    if (!domain_->removeRecorder(tag)) a.fail("recorder " + std::to_string(tag) + " does not exist");
+  } else if (what == "recorders") {
+    domain_->removeRecorders();
+  } else if (what == "sp") {
+    const int node = a.nextInt("nodeTag"), dof = a.nextInt("dof");
+    if (!domain_->removeSP(node, dof - 1))
+      a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) + " has no single-point constraint");
+  } else if (what == "mp") {
+    const int node = a.nextInt("constrainedNode");
+    if (!domain_->removeMP(node)) a.fail("node " + std::to_string(node) + " has no multi-point constraint");
+  } else if (what == "timeSeries") {
+    const int tag = a.nextInt("tsTag");
+    if (!domain_->timeSeries.remove(tag)) a.fail("timeSeries " + std::to_string(tag) + " does not exist");
+  } else if (what == "parameter") {
+    a.nextInt("paramTag");
+  } else {
+    a.fail("cannot remove '" + what + "' (expected ele, node, loadPattern, recorder, recorders, sp, mp, timeSeries)");
+  }
+  a.expectEnd();
+  return {};
+}
+
+Result Interpreter::recorder(CommandArgs& a) {
+  auto r = build<Recorder>(a, *domain_, Registry::global().recorders);
+  return static_cast<long long>(domain_->addRecorder(std::move(r)));
+}
+
+Result Interpreter::record(CommandArgs& a) {
+  a.expectEnd();
+  domain_->record();
+  domain_->flushRecorders();
+  return {};
+}
+
+Result Interpreter::loadPlugin(CommandArgs& a) {
+  const std::string path = a.nextString("path");
+  a.expectEnd();
+  Registry::global().loadPlugin(path);
+  return {};
+}
+
+Result Interpreter::setParameter(CommandArgs& a) {
+  if (!a.nextFlag("-val")) a.fail("expected '-val', value first");
+  const double value = a.nextDouble("value");
+  std::vector<int> tags;
+  if (a.nextFlag("-ele")) {
+    tags = a.nextInts("element tag", 1);
+  } else if (a.nextFlag("-eleRange")) {
+    const int from = a.nextInt("first element"), to = a.nextInt("last element");
+    for (const auto& [tag, e] : domain_->elements())
+      if (tag >= from && tag <= to) tags.push_back(tag);
+  } else {
+    for (const auto& [tag, e] : domain_->elements()) tags.push_back(tag);
+  }
+  const auto args = a.restAsStrings();
+  if (args.empty()) a.fail("missing parameter name (e.g. 'friction')");
+  int recognized = 0;
+  for (int t : tags)
+    if (domain_->element(t, a.context()).setParameter(args, value)) ++recognized;
+  if (recognized == 0) a.fail("no element recognizes parameter '" + args[0] + "'");
+  return {};
+}
+
+Result Interpreter::updateMaterialStage(CommandArgs& a) {
+  int matTag = 0, stage = 0;
+  bool haveMat = false, haveStage = false;
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt == "-material") { matTag = a.nextInt("matTag"); haveMat = true; }
+    else if (opt == "-stage") { stage = a.nextInt("stage"); haveStage = true; }
+    else if (opt == "-parameter") a.nextInt("paramTag");
+    else a.fail("unknown option '" + opt + "' (expected -material, -stage)");
+  }
+  if (!haveMat || !haveStage) a.fail("needs '-material', matTag, '-stage', stage");
+  NDMaterial* m = domain_->ndMaterials.find(matTag);
+  if (!m) a.fail("nDMaterial " + std::to_string(matTag) + " does not exist");
+  m->updateStage(stage);
+  for (const auto& [tag, e] : domain_->elements()) e->updateMaterialStage(matTag, stage);
+  return {};
+}
+
+}  // namespace beamsolid

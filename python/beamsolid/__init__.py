@@ -1,0 +1,10 @@
+"""BeamSolid: OpenSees-style finite element analysis with beam-solid contact.
+
+``import beamsolid.opensees as ops`` gives the OpenSeesPy command set on a
+default model; ``beamsolid.Model()`` gives independent models in one process.
+"""
+from ._beamsolid import OpenSeesError, command_names, registered_types
+from .model import Model
+
+__all__ = ["Model", "OpenSeesError", "command_names", "registered_types"]
+__version__ = "0.1.0"

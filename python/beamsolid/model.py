@@ -1,0 +1,56 @@
+"""The Model class: one Domain and its analysis, with every OpenSeesPy command as a method."""
+import atexit
+import sys
+import weakref
+
+from ._beamsolid import Interpreter, OpenSeesError, command_names
+
+_live_models = weakref.WeakSet()
+
+
+@atexit.register
+def _close_all_recorders():
+    # Recorded data is never lost: flush and close every recorder at exit.
+    for model in list(_live_models):
+        try:
+            model._interp.close_recorders()
+        except OpenSeesError:
+            pass
+
+
+def _make_command(name):
+    def command(self, *args):
+        return self._interp.call(name, *args)
+
+    command.__name__ = name
+    command.__qualname__ = f"Model.{name}"
+    command.__doc__ = f"OpenSeesPy command ``{name}``; see docs/commands.md."
+    return command
+
+
+class Model:
+    """An independent model: its own nodes, elements, recorders and analysis.
+
+    Methods have OpenSeesPy's names and positional arguments, e.g.
+    ``m.node(1, 0.0, 0.0, 0.0)``; bad input raises OpenSeesError.
+    """
+
+    def __init__(self):
+        self._interp = Interpreter()
+        _live_models.add(self)
+
+    def printModel(self, *args):
+        """Print the model (readable, or '-JSON'); with '-file' write it there."""
+        text = self._interp.call("printModel", *args)
+        if text:
+            sys.stdout.write(text)
+
+    def close(self):
+        """Flush and close this model's recorders."""
+        self._interp.close_recorders()
+
+
+for _name in command_names():
+    if not hasattr(Model, _name):
+        setattr(Model, _name, _make_command(_name))
+del _name
