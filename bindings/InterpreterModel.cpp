@@ -213,25 +213,29 @@ std::unique_ptr<Product> build(CommandArgs& a, Domain& domain, const Table& tabl
 
 Result Interpreter::uniaxialMaterial(CommandArgs& a) {
   auto m = build<UniaxialMaterial>(a, *domain_, Registry::global().uniaxialMaterials);
-  domain_->uniaxialMaterials.add(m->tag(), std::move(m), a.context());
+  const int tag = m->tag();
+  domain_->uniaxialMaterials.add(tag, std::move(m), a.context());
   return {};
 }
 
 Result Interpreter::nDMaterial(CommandArgs& a) {
   auto m = build<NDMaterial>(a, *domain_, Registry::global().ndMaterials);
-  domain_->ndMaterials.add(m->tag(), std::move(m), a.context());
+  const int tag = m->tag();
+  domain_->ndMaterials.add(tag, std::move(m), a.context());
   return {};
 }
 
 Result Interpreter::geomTransf(CommandArgs& a) {
   auto t = build<CrdTransf>(a, *domain_, Registry::global().geomTransfs);
-  domain_->geomTransfs.add(t->tag(), std::move(t), a.context());
+  const int tag = t->tag();
+  domain_->geomTransfs.add(tag, std::move(t), a.context());
   return {};
 }
 
 Result Interpreter::timeSeries(CommandArgs& a) {
   auto t = build<TimeSeries>(a, *domain_, Registry::global().timeSeries);
-  domain_->timeSeries.add(t->tag(), std::move(t), a.context());
+  const int tag = t->tag();
+  domain_->timeSeries.add(tag, std::move(t), a.context());
   return {};
 }
 
