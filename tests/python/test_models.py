@@ -1,0 +1,79 @@
+"""Independent models, the OpenSees-compatible module, and node queries."""
+import beamsolid
+
+
+def test_two_models_are_independent():
+    a, b = beamsolid.Model(), beamsolid.Model()
+    for m in (a, b):
+        m.model("basic", "-ndm", 3, "-ndf", 3)
+    a.node(1, 0.0, 0.0, 0.0)
+    b.node(1, 5.0, 6.0, 7.0)
+    b.node(2, 1.0, 1.0, 1.0)
+    assert a.nodeCoord(1) == [0.0, 0.0, 0.0]
+    assert b.nodeCoord(1) == [5.0, 6.0, 7.0]
+    assert a.getNodeTags() == [1]
+    assert b.getNodeTags() == [1, 2]
+
+
+def test_wipe_clears_the_default_model(ops):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(1, 1.0, 2.0, 3.0)
+    assert ops.getNodeTags() == [1]
+    assert ops.nodeCoord(1, 3) == 3.0
+
+
+def test_mixed_ndf_nodes_and_return_types(ops):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(2, 0.0, 0.0, 1.0)
+    ops.node(3, 0.0, 0.0, 2.0, "-ndf", 6, "-mass", 1, 2, 3, 4, 5, 6)
+    assert len(ops.nodeDisp(1)) == 6
+    assert len(ops.nodeDisp(2)) == 3
+    assert isinstance(ops.nodeDisp(3, 1), float)
+    assert ops.nodeMass(3) == [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
+    assert ops.getTime() == 0.0
+
+
+def test_fixz_serves_mixed_ndf_nodes(ops):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 1.0, 0.0, 0.0, "-ndf", 3)
+    ops.node(3, 1.0, 0.0, 1.0, "-ndf", 3)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.fixZ(0.0, 1, 1, 1)
+    ops.printModel("-JSON", "-file", "/dev/null")
+    ops.timeSeries("Constant", 1)
+    ops.pattern("Plain", 1, 1)
+    # node 2 fixed by fixZ, node 3 not: an sp on node 2 collides with the fix.
+    try:
+        ops.sp(2, 1, 0.1)
+        raise AssertionError("sp on a fixed dof must raise")
+    except ops.OpenSeesError as err:
+        assert "already fixed" in str(err)
+    ops.sp(3, 1, 0.1)
+
+
+def test_printmodel_json_is_valid(ops, tmp_path):
+    import json
+
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 1.0, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1)
+    out = tmp_path / "model.json"
+    ops.printModel("-JSON", "-file", str(out))
+    data = json.loads(out.read_text())
+    nodes = data["StructuralAnalysisModel"]["geometry"]["nodes"]
+    assert [n["name"] for n in nodes] == [1, 2]
+    assert nodes[1]["crd"] == [1.0, 0.0, 0.0]
+
+
+def test_printmodel_prints_through_python_stdout(ops, capsys):
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(7, 0.0, 0.0, 0.0)
+    ops.printModel()
+    assert "Node 7" in capsys.readouterr().out
