@@ -36,10 +36,20 @@ std::string buildError(const std::string& type, std::vector<V> values) {
   return "(no error)";
 }
 
+// A per-process scratch directory, removed at exit.
+struct ScratchDir {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("beamsolid_ts_" + std::to_string(::getpid()));
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
+
 std::filesystem::path scratchFile(const std::string& name, const std::string& contents) {
-  auto dir = std::filesystem::temp_directory_path() / ("beamsolid_ts_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  auto path = dir / name;
+  static ScratchDir scratch;
+  std::filesystem::create_directories(scratch.path);
+  auto path = scratch.path / name;
   std::ofstream(path) << contents;
   return path;
 }
