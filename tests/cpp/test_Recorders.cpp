@@ -810,3 +810,29 @@ TEST_F(RecorderTest, EnvelopeElementWrittenWhenDomainIsDestroyed) {
   EXPECT_TRUE(closeAtPrecision(rows[2][0], absMax));
   for (int k = 0; k < 3; ++k) EXPECT_TRUE(closeAtPrecision(rows[k][1], 7002.0));
 }
+
+TEST_F(RecorderTest, XmlWithCloseOnWriteIsCompleteAfterClose) {
+  const std::string f = file("disp.xml");
+  Recorder& r = add("Node", {s("-xml"), s(f), s("-closeOnWrite"), s("-node"), 2LL, s("-dof"), 3LL, s("disp")});
+  for (int step = 1; step <= 2; ++step) commitStep(*domain_, step);
+  r.close();
+  const XmlSummary x = checkXml(slurp(f));
+  const auto rows = parseRows(x.data, ' ');
+  ASSERT_EQ(rows.size(), 2u);
+  for (int step = 1; step <= 2; ++step) EXPECT_TRUE(closeAtPrecision(rows[step - 1][0], dispOf(step, 2, 2)));
+}
+
+TEST_F(RecorderTest, EnvelopeRewriteKeepsAppendedToContent) {
+  const std::string f = file("env.out");
+  std::ofstream(f) << "9 9\n";
+  Recorder& r = add("EnvelopeNode", {s("-fileAdd"), s(f), s("-node"), 1LL, s("-dof"), 1LL, s("disp")});
+  commitStep(*domain_, 1);
+  r.flush();
+  commitStep(*domain_, 2);
+  r.close();
+  const auto rows = readTable(f);
+  ASSERT_EQ(rows.size(), 4u);  // the old line, then min, max, absmax
+  EXPECT_EQ(rows[0], (std::vector<double>{9.0, 9.0}));
+  EXPECT_TRUE(closeAtPrecision(rows[1][0], std::min(dispOf(1, 1, 0), dispOf(2, 1, 0))));
+  EXPECT_TRUE(closeAtPrecision(rows[2][0], std::max(dispOf(1, 1, 0), dispOf(2, 1, 0))));
+}
