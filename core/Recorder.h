@@ -11,7 +11,8 @@ class Recorder {
  public:
   virtual ~Recorder() = default;
   virtual std::string className() const = 0;
-  virtual void record(const Domain& domain, double time) = 0;
+  // Non-const Domain: a reaction recorder asks the Domain to compute reactions.
+  virtual void record(Domain& domain, double time) = 0;
   virtual void flush() = 0;
   virtual void close() = 0;
 };

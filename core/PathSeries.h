@@ -1,0 +1,48 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/TimeSeries.h"
+
+namespace beamsolid {
+
+// Piecewise linear load factor through user points (t_i, v_i), times cFactor.
+// Before the first point the factor is 0; after the last it is 0, or the
+// last value with useLast. slope() is the slope of the segment holding t
+// (the segment to the right at an interior point, the last segment at the
+// final point) and 0 outside the path.
+class PathSeries : public TimeSeries {
+ public:
+  // Throws OpenSeesError prefixed by `context` unless the times strictly
+  // increase and match the values in number (at least one point).
+  PathSeries(int tag, std::vector<double> times, std::vector<double> values, double cFactor, bool useLast,
+             const std::string& context);
+
+  std::string className() const override { return "Path"; }
+  double factor(double time) const override;
+  double slope(double time) const override;
+  void print(std::ostream& os) const override;
+
+  const std::vector<double>& times() const { return times_; }
+  const std::vector<double>& values() const { return values_; }
+  double startTime() const { return times_.front(); }
+  double endTime() const { return times_.back(); }
+
+  // Whitespace- (or comma-) separated numbers of a file; errors name the
+  // file and the offending token.
+  static std::vector<double> readNumbers(const std::string& path, const std::string& context);
+
+ private:
+  // Index i of the segment [t_i, t_i+1] used for time t inside the path.
+  std::size_t segment(double time) const;
+
+  std::vector<double> times_;
+  std::vector<double> values_;
+  double cFactor_;
+  bool useLast_;
+  // Times within this distance of the ends count as on the path, so that
+  // t = n*dt computed in floating point still hits the last point.
+  double tolerance_;
+};
+
+}  // namespace beamsolid
