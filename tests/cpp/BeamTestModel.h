@@ -3,6 +3,8 @@
 // registered factories, and assembles and solves the free-dof system with
 // dense Eigen (no analysis layer involved).
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <set>
@@ -133,6 +135,7 @@ class DenseModel {
     if (scale <= 0.0) scale = f.norm();
     for (int it = 0; it <= maxIterations; ++it) {
       const Vector residual = f - internalForce();
+      if (std::getenv("BEAMTEST_TRACE")) fprintf(stderr, "it %d residual %g\n", it, residual.norm() / scale);
       if (residual.norm() <= tol * scale) return it;
       const Vector du = stiffness().fullPivLu().solve(residual);
       setDisplacement(displacement() + du);

@@ -280,3 +280,31 @@ TEST(CrdTransf, ParallelVecxzAndZeroLengthFailAtTheElement) {
   EXPECT_EQ(d.elements().size(), 0u);
   EXPECT_NE(beam(8, 1, 2, 9).find("element elasticBeamColumn 8: geomTransf 9 does not exist"), std::string::npos);
 }
+
+TEST(CrdTransf, IncrementsSinceCommitAndSincePreviousUpdate) {
+  Domain d;
+  Node& a = addNode(d, 1, {0.3, -1.2, 0.7});
+  Node& b = addNode(d, 2, {2.1, 0.4, 3.3});
+  addTransf(d, "Linear", {1LL, 0.4, -0.9, 0.2, "-jntOffset", 0.1, 0.2, -0.1, -0.3, 0.05, 0.2});
+  auto t = bind(d, 1, 1, 2);
+  std::srand(13);
+  auto basicAt = [&](const Vector12& u) {
+    a.setTrialDisp(Vector(u.head<6>()));
+    b.setTrialDisp(Vector(u.tail<6>()));
+    t->update();
+    return Vector6(t->basicTrialDisp());
+  };
+  const Vector12 u1 = 1e-3 * Vector12::Random(), u2 = 1e-3 * Vector12::Random(), u3 = 1e-3 * Vector12::Random();
+  const Vector6 v1 = basicAt(u1);
+  a.commitState();
+  b.commitState();
+  t->commitState();
+  const Vector6 v2 = basicAt(u2);
+  EXPECT_LT((t->basicIncrDisp() - (v2 - v1)).norm(), 1e-15);
+  EXPECT_LT((t->basicIncrDeltaDisp() - (v2 - v1)).norm(), 1e-15);
+  const Vector6 v3 = basicAt(u3);
+  EXPECT_LT((t->basicIncrDisp() - (v3 - v1)).norm(), 1e-15);
+  EXPECT_LT((t->basicIncrDeltaDisp() - (v3 - v2)).norm(), 1e-15);
+  // Small displacements: the deformed length is the initial one.
+  EXPECT_EQ(t->deformedLength(), t->initialLength());
+}
