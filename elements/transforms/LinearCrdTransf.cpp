@@ -35,8 +35,7 @@ LinearCrdTransf::LinearCrdTransf(int tag, const Vector3& vecxz, const Vector3& j
     : CrdTransf(tag), vecxz_(vecxz), offsetI_(jointOffsetI), offsetJ_(jointOffsetJ) {}
 
 std::unique_ptr<CrdTransf> LinearCrdTransf::clone() const {
-  auto copy = std::make_unique<LinearCrdTransf>(tag(), vecxz_, offsetI_, offsetJ_);
-  return copy;
+  return std::make_unique<LinearCrdTransf>(tag(), vecxz_, offsetI_, offsetJ_);
 }
 
 std::string LinearCrdTransf::context() const { return "geomTransf " + className() + " " + std::to_string(tag()); }
@@ -177,8 +176,8 @@ void LinearCrdTransf::print(std::ostream& os) const {
   if (offsetI_.norm() > 0.0 || offsetJ_.norm() > 0.0)
     os << ", jntOffset I " << format(offsetI_) << " J " << format(offsetJ_);
   if (nodeI_)
-    os << ", L " << length_ << ", local x " << format(axes_.row(0).transpose()) << " y " << format(axes_.row(1).transpose()) << " z "
-       << format(axes_.row(2).transpose());
+    os << ", L " << length_ << ", local x " << format(axes_.row(0).transpose()) << " y "
+       << format(axes_.row(1).transpose()) << " z " << format(axes_.row(2).transpose());
   os << '\n';
 }
 
