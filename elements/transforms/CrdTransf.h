@@ -10,9 +10,21 @@ namespace beamsolid {
 class Node;
 
 // Geometric transformation of a 3D beam (geomTransf): maps the 12 global end
-// dofs to the 6 basic deformations [axial, thz_i, thz_j, thy_i, thy_j, twist]
-// (OpenSees' basic system) and basic forces back to global forces and
+// dofs to the 6 basic deformations and basic forces back to global forces and
 // stiffness. One prototype per geomTransf tag; each element owns a clone.
+//
+// Local axes (OpenSees convention): x runs from end I to end J (the ends are
+// the nodes moved by the rigid joint offsets), y = vecxz x x (normalized),
+// z = x x y, so local z lies in the plane of x and vecxz.
+//
+// Basic system (simply supported, axially fixed at I), OpenSees order:
+//   v = [eps*L, thz_i, thz_j, thy_i, thy_j, twist]      deformations
+//   q = [N, Mz_i, Mz_j, My_i, My_j, T]                  forces (N tension +)
+// with, in local end displacements (u, v, w, rx, ry, rz at I then J),
+//   thz_i = rz_i - (v_j - v_i)/L,  thy_i = ry_i + (w_j - w_i)/L  (same at j).
+// Local end forces are A^T q + p0, where p0 (12, local, same dof order) holds
+// the reactions of the basic system under element loads that q cannot carry
+// (transverse simple-support reactions, the axial reaction at I).
 class CrdTransf {
  public:
   using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -41,8 +53,12 @@ class CrdTransf {
   // The user's vecxz.
   virtual Vector3 vecxz() const = 0;
 
+  // Basic deformations of the trial state, their increment since the last
+  // commit, and their change since the previous update() (for elements that
+  // iterate on the increment, e.g. force-based beams).
   virtual Vector6 basicTrialDisp() const = 0;
   virtual Vector6 basicIncrDisp() const = 0;
+  virtual Vector6 basicIncrDeltaDisp() const = 0;
   // Global end forces from basic forces q plus fixed-end forces p0 (local, 12).
   virtual Vector12 globalResistingForce(const Vector6& q, const Vector12& p0) const = 0;
   virtual Matrix12 globalStiffMatrix(const Matrix6& kb, const Vector6& q) const = 0;

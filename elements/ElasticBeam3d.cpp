@@ -1,0 +1,294 @@
+#include "elements/ElasticBeam3d.h"
+
+#include "core/Domain.h"
+#include "core/Node.h"
+#include "core/OpenSeesError.h"
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+ElasticBeam3d::ElasticBeam3d(int tag, int nodeI, int nodeJ, const Properties& properties,
+                             std::unique_ptr<CrdTransf> transf)
+    : Element(tag, {nodeI, nodeJ}), properties_(properties), transf_(std::move(transf)) {}
+
+void ElasticBeam3d::setDomain(Domain&) {
+  for (const Node* n : nodes())
+    if (n->ndf() != 6)
+      throw OpenSeesError(context() + ": node " + std::to_string(n->tag()) + " has " + std::to_string(n->ndf()) +
+                          " dofs, the 3D elasticBeamColumn needs 6 (create its nodes after "
+                          "model('basic', '-ndm', 3, '-ndf', 6))");
+  try {
+    transf_->initialize(*nodes()[0], *nodes()[1]);
+  } catch (const OpenSeesError& e) {
+    throw OpenSeesError(context() + ": " + e.what());
+  }
+  length_ = transf_->initialLength();
+
+  const auto& p = properties_;
+  const double L = length_;
+  kb_.setZero();
+  kb_(0, 0) = p.E * p.A / L;
+  kb_(1, 1) = kb_(2, 2) = 4.0 * p.E * p.Iz / L;
+  kb_(1, 2) = kb_(2, 1) = 2.0 * p.E * p.Iz / L;
+  kb_(3, 3) = kb_(4, 4) = 4.0 * p.E * p.Iy / L;
+  kb_(3, 4) = kb_(4, 3) = 2.0 * p.E * p.Iy / L;
+  kb_(5, 5) = p.G * p.J / L;
+
+  initialStiff_ = transf_->initialGlobalStiffMatrix(kb_);
+  formMass();
+}
+
+void ElasticBeam3d::formMass() {
+  mass_.setZero();
+  const double m = properties_.massPerLength;
+  const double L = length_;
+  if (m == 0.0) return;
+  if (!properties_.consistentMass) {
+    // Lumped: half the translational mass at each end, no rotary inertia.
+    for (int d : {0, 1, 2, 6, 7, 8}) mass_(d, d) = 0.5 * m * L;
+    return;
+  }
+  // Consistent mass in local axes: linear axial and torsional fields, cubic
+  // Hermite bending in both planes (theta_z = v', theta_y = -w').
+  Matrix12 local = Matrix12::Zero();
+  const double axial = m * L / 6.0;
+  local(0, 0) = local(6, 6) = 2.0 * axial;
+  local(0, 6) = local(6, 0) = axial;
+  // Torsional inertia per length m*J/A: exact for circular sections (J = Ip).
+  const double torsion = m * properties_.J / properties_.A * L / 6.0;
+  local(3, 3) = local(9, 9) = 2.0 * torsion;
+  local(3, 9) = local(9, 3) = torsion;
+  const double c = m * L / 420.0;
+  const Eigen::Matrix4d hermite = (Eigen::Matrix4d() << 156.0, 22.0 * L, 54.0, -13.0 * L,  //
+                                   22.0 * L, 4.0 * L * L, 13.0 * L, -3.0 * L * L,          //
+                                   54.0, 13.0 * L, 156.0, -22.0 * L,                       //
+                                   -13.0 * L, -3.0 * L * L, -22.0 * L, 4.0 * L * L)
+                                      .finished();
+  // x-y plane: (v_i, rz_i, v_j, rz_j); x-z plane: (w_i, -ry_i, w_j, -ry_j).
+  const int xy[4] = {1, 5, 7, 11};
+  const int xz[4] = {2, 4, 8, 10};
+  const double xzSign[4] = {1.0, -1.0, 1.0, -1.0};
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      local(xy[a], xy[b]) = c * hermite(a, b);
+      local(xz[a], xz[b]) = c * xzSign[a] * xzSign[b] * hermite(a, b);
+    }
+  // Rotation only: the mass sits on the flexible length between the offset
+  // ends, carried by the nodes without the rigid-arm coupling.
+  Matrix12 rotation = Matrix12::Zero();
+  const Matrix3 axes = transf_->localAxes();
+  for (int k = 0; k < 4; ++k) rotation.block<3, 3>(3 * k, 3 * k) = axes;
+  mass_ = rotation.transpose() * local * rotation;
+}
+
+void ElasticBeam3d::update() { transf_->update(); }
+
+ElasticBeam3d::Vector6 ElasticBeam3d::basicForce() const {
+  return kb_ * transf_->basicTrialDisp() + q0_;
+}
+
+ElasticBeam3d::Vector12 ElasticBeam3d::localForce() const {
+  return transf_->localResistingForce(basicForce(), p0_);
+}
+
+MatrixView ElasticBeam3d::tangentStiff() {
+  stiff_ = transf_->globalStiffMatrix(kb_, basicForce());
+  return viewOf(stiff_);
+}
+
+MatrixView ElasticBeam3d::initialStiff() { return viewOf(initialStiff_); }
+
+VectorView ElasticBeam3d::resistingForce() {
+  force_ = transf_->globalResistingForce(basicForce(), p0_);
+  return viewOf(force_);
+}
+
+MatrixView ElasticBeam3d::massMatrix() { return viewOf(mass_); }
+
+void ElasticBeam3d::commitState() { transf_->commitState(); }
+void ElasticBeam3d::revertToLastCommit() { transf_->revertToLastCommit(); }
+void ElasticBeam3d::revertToStart() { transf_->revertToStart(); }
+
+void ElasticBeam3d::zeroLoad() {
+  q0_.setZero();
+  p0_.setZero();
+}
+
+bool ElasticBeam3d::acceptsLoad(ElementLoad::Type type) const {
+  return type == ElementLoad::Type::BeamUniform || type == ElementLoad::Type::BeamPoint;
+}
+
+void ElasticBeam3d::addLoad(const ElementLoad& load, double factor) {
+  const std::vector<double>& v = load.values;
+  const double L = length_;
+  switch (load.type) {
+    case ElementLoad::Type::BeamUniform: {
+      if (v.size() < 2 || v.size() > 3)
+        throw OpenSeesError(context() + ": -beamUniform needs Wy, Wz and optionally Wx, got " +
+                            std::to_string(v.size()) + " value(s)");
+      const double wy = factor * v[0];
+      const double wz = factor * v[1];
+      const double wx = v.size() > 2 ? factor * v[2] : 0.0;
+      // Basic system reactions: axial all at I, transverse half at each end.
+      p0_[0] -= wx * L;
+      q0_[0] -= 0.5 * wx * L;
+      p0_[1] -= 0.5 * wy * L;
+      p0_[7] -= 0.5 * wy * L;
+      p0_[2] -= 0.5 * wz * L;
+      p0_[8] -= 0.5 * wz * L;
+      // Fixed-end moments wL^2/12 (theta_y = -w' flips the x-z plane signs).
+      const double mz = wy * L * L / 12.0;
+      const double my = wz * L * L / 12.0;
+      q0_[1] -= mz;
+      q0_[2] += mz;
+      q0_[3] += my;
+      q0_[4] -= my;
+      return;
+    }
+    case ElementLoad::Type::BeamPoint: {
+      if (v.size() < 3 || v.size() > 4)
+        throw OpenSeesError(context() + ": -beamPoint needs Py, Pz, xL and optionally Px, got " +
+                            std::to_string(v.size()) + " value(s)");
+      const double xL = v[2];
+      if (!(xL >= 0.0 && xL <= 1.0))
+        throw OpenSeesError(context() + ": -beamPoint xL must lie in [0, 1] (a fraction of the length), got " +
+                            std::to_string(xL));
+      const double py = factor * v[0];
+      const double pz = factor * v[1];
+      const double px = v.size() > 3 ? factor * v[3] : 0.0;
+      const double a = xL * L;
+      const double b = L - a;
+      p0_[0] -= px;
+      q0_[0] -= px * a / L;
+      p0_[1] -= py * b / L;
+      p0_[7] -= py * a / L;
+      p0_[2] -= pz * b / L;
+      p0_[8] -= pz * a / L;
+      // Fixed-end moments P a b^2 / L^2 and P a^2 b / L^2.
+      const double atI = a * b * b / (L * L);
+      const double atJ = a * a * b / (L * L);
+      q0_[1] -= py * atI;
+      q0_[2] += py * atJ;
+      q0_[3] += pz * atI;
+      q0_[4] -= pz * atJ;
+      return;
+    }
+    default:
+      Element::addLoad(load, factor);
+  }
+}
+
+namespace {
+
+std::vector<std::string> endNames(const char* const (&names)[6]) {
+  std::vector<std::string> out;
+  for (int end = 1; end <= 2; ++end)
+    for (const char* n : names) out.push_back(std::string(n) + "_" + std::to_string(end));
+  return out;
+}
+
+}  // namespace
+
+Response ElasticBeam3d::setResponse(const std::vector<std::string>& args) {
+  if (args.empty()) return {};
+  const std::string& what = args[0];
+  if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    static const char* const names[6] = {"Px", "Py", "Pz", "Mx", "My", "Mz"};
+    return Response::named(endNames(names),
+                           [this] { return Vector(transf_->globalResistingForce(basicForce(), p0_)); });
+  }
+  if (what == "localForce" || what == "localForces") {
+    static const char* const names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+    return Response::named(endNames(names), [this] { return Vector(localForce()); });
+  }
+  if (what == "basicForce" || what == "basicForces")
+    return Response::named({"N", "Mz_1", "Mz_2", "My_1", "My_2", "T"}, [this] { return Vector(basicForce()); });
+  if (what == "basicDeformation" || what == "basicDeformations" || what == "deformation" ||
+      what == "deformations")
+    return Response::named({"eps", "thetaZ_1", "thetaZ_2", "thetaY_1", "thetaY_2", "thetaX"},
+                           [this] { return Vector(transf_->basicTrialDisp()); });
+  return {};
+}
+
+void ElasticBeam3d::print(std::ostream& os) const {
+  const auto& p = properties_;
+  os << "ElasticBeam3d " << tag() << " (elasticBeamColumn): nodes " << nodeTags()[0] << ' ' << nodeTags()[1]
+     << ", A " << p.A << ", E " << p.E << ", G " << p.G << ", J " << p.J << ", Iy " << p.Iy << ", Iz " << p.Iz;
+  if (p.massPerLength != 0.0)
+    os << ", mass/length " << p.massPerLength << (p.consistentMass ? " (consistent)" : " (lumped)");
+  os << ", geomTransf " << transf_->className() << ' ' << transf_->tag();
+  if (length_ > 0.0) os << ", L " << length_;
+  os << '\n';
+}
+
+void ElasticBeam3d::printJSON(std::ostream& os) const {
+  const auto& p = properties_;
+  const auto precision = os.precision(12);
+  os << "{\"name\": " << tag() << ", \"type\": \"ElasticBeam3d\", \"nodes\": [" << nodeTags()[0] << ", "
+     << nodeTags()[1] << "], \"E\": " << p.E << ", \"G\": " << p.G << ", \"A\": " << p.A << ", \"Jx\": " << p.J
+     << ", \"Iy\": " << p.Iy << ", \"Iz\": " << p.Iz << ", \"massperlength\": " << p.massPerLength
+     << ", \"cMass\": " << (p.consistentMass ? "true" : "false") << ", \"crdTransformation\": \""
+     << transf_->tag() << "\"}";
+  os.precision(precision);
+}
+
+namespace {
+
+std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
+  const int tag = args.nextInt("eleTag");
+  args.setContext("element elasticBeamColumn " + std::to_string(tag));
+  const int nodeI = args.nextInt("iNode");
+  const int nodeJ = args.nextInt("jNode");
+
+  // The number of numbers up to the first option tells the form apart.
+  std::size_t numbers = 0;
+  while (args.position() + numbers < args.size() &&
+         !std::holds_alternative<std::string>(args.at(args.position() + numbers)))
+    ++numbers;
+  if (numbers == 4)
+    args.fail("the 2D form (A, E, Iz, transfTag) is not supported: BeamSolid models are 3D; give "
+              "A, E, G, J, Iy, Iz, transfTag");
+  if (numbers == 2)
+    args.fail("the section form (secTag, transfTag) is not supported yet; give A, E, G, J, Iy, Iz, transfTag");
+  if (numbers != 7)
+    args.fail("expected A, E, G, J, Iy, Iz, transfTag (7 numbers) after the nodes, got " +
+              std::to_string(numbers));
+
+  ElasticBeam3d::Properties p;
+  struct Positive {
+    double* value;
+    const char* name;
+  };
+  for (const Positive& item : {Positive{&p.A, "A"}, Positive{&p.E, "E"}, Positive{&p.G, "G"},
+                               Positive{&p.J, "J"}, Positive{&p.Iy, "Iy"}, Positive{&p.Iz, "Iz"}}) {
+    const std::size_t at = args.position();
+    *item.value = args.nextDouble(item.name);
+    if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+  }
+  const int transfTag = args.nextInt("transfTag");
+
+  while (!args.done()) {
+    if (args.nextFlag("-mass")) {
+      const std::size_t at = args.position();
+      p.massPerLength = args.nextDouble("massPerLength");
+      if (p.massPerLength < 0.0) args.failAt(at, "massPerLength", "a number >= 0");
+    } else if (args.nextFlag("-cMass")) {
+      p.consistentMass = true;
+    } else if (args.nextIsString()) {
+      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass' or '-cMass')");
+    } else {
+      args.expectEnd();
+    }
+  }
+
+  auto transf = domain.geomTransfs.get(transfTag, args.context()).clone();
+  return std::make_unique<ElasticBeam3d>(tag, nodeI, nodeJ, p, std::move(transf));
+}
+
+void registerElasticBeam3d(Registry& r) { r.elements.add("elasticBeamColumn", &buildElasticBeam3d); }
+
+}  // namespace
+
+BEAMSOLID_REGISTER(registerElasticBeam3d);
+
+}  // namespace beamsolid

@@ -1,0 +1,85 @@
+#pragma once
+#include <memory>
+
+#include "elements/Element.h"
+#include "elements/transforms/CrdTransf.h"
+
+namespace beamsolid {
+
+// Linear elastic 3D Euler-Bernoulli beam-column (elasticBeamColumn, 3D form):
+//   element('elasticBeamColumn', tag, iNode, jNode, A, E, G, J, Iy, Iz,
+//           transfTag, <'-mass', massPerLength>, <'-cMass'>)
+// Basic stiffness EA/L, 4EI/L 2EI/L in both planes, GJ/L in the basic system
+// of CrdTransf.h; the transformation (Linear, PDelta, ...) does the rest.
+// Element loads (-beamUniform, -beamPoint) enter as fixed-end forces, so
+// resistingForce = K u - (equivalent nodal loads), as in OpenSees.
+class ElasticBeam3d : public Element {
+ public:
+  using Vector6 = CrdTransf::Vector6;
+  using Vector12 = CrdTransf::Vector12;
+  using Matrix6 = CrdTransf::Matrix6;
+  using Matrix12 = CrdTransf::Matrix12;
+
+  struct Properties {
+    double A = 0.0, E = 0.0, G = 0.0, J = 0.0, Iy = 0.0, Iz = 0.0;
+    double massPerLength = 0.0;
+    bool consistentMass = false;
+  };
+
+  ElasticBeam3d(int tag, int nodeI, int nodeJ, const Properties& properties, std::unique_ptr<CrdTransf> transf);
+
+  std::string className() const override { return "elasticBeamColumn"; }
+
+  void update() override;
+  MatrixView tangentStiff() override;
+  MatrixView initialStiff() override;
+  VectorView resistingForce() override;
+  MatrixView massMatrix() override;
+
+  void commitState() override;
+  void revertToLastCommit() override;
+  void revertToStart() override;
+
+  void zeroLoad() override;
+  void addLoad(const ElementLoad& load, double factor) override;
+  bool acceptsLoad(ElementLoad::Type type) const override;
+
+  // 'force'/'globalForce' (12), 'localForce' (12), 'basicForce' (6),
+  // 'basicDeformation'/'deformation' (6).
+  Response setResponse(const std::vector<std::string>& args) override;
+
+  void print(std::ostream& os) const override;
+  void printJSON(std::ostream& os) const override;
+
+  const Properties& properties() const { return properties_; }
+  const CrdTransf& transformation() const { return *transf_; }
+  double length() const { return length_; }
+
+  // Basic forces q = kb v + q0 of the current trial state.
+  Vector6 basicForce() const;
+  // Local end forces (12) in the local axes of the transformation.
+  Vector12 localForce() const;
+
+ protected:
+  void setDomain(Domain& domain) override;
+
+ private:
+  void formMass();
+
+  Properties properties_;
+  std::unique_ptr<CrdTransf> transf_;
+  double length_ = 0.0;
+
+  Matrix6 kb_ = Matrix6::Zero();
+  // Fixed-end forces of element loads: q0 in the basic system, p0 the
+  // basic system's reactions (local, see CrdTransf.h).
+  Vector6 q0_ = Vector6::Zero();
+  Vector12 p0_ = Vector12::Zero();
+
+  Matrix12 stiff_ = Matrix12::Zero();
+  Matrix12 initialStiff_ = Matrix12::Zero();
+  Vector12 force_ = Vector12::Zero();
+  Matrix12 mass_ = Matrix12::Zero();
+};
+
+}  // namespace beamsolid
