@@ -1,0 +1,209 @@
+#include "elements/ZeroLength.h"
+
+#include <charconv>
+#include <sstream>
+
+#include "core/CommandArgs.h"
+#include "core/Domain.h"
+#include "core/Node.h"
+#include "core/OpenSeesError.h"
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+ZeroLength::ZeroLength(int tag, int iNode, int jNode, const std::vector<const UniaxialMaterial*>& materials,
+                       const std::vector<int>& directions, const Matrix3& localAxes, bool doRayleigh)
+    : Element(tag, {iNode, jNode}), localAxes_(localAxes), doRayleigh_(doRayleigh) {
+  if (materials.size() != directions.size() || materials.empty())
+    throw OpenSeesError(context() + ": expected one direction per material, got " +
+                        std::to_string(materials.size()) + " material(s) and " +
+                        std::to_string(directions.size()) + " direction(s)");
+  for (std::size_t k = 0; k < materials.size(); ++k) {
+    if (directions[k] < 1 || directions[k] > 6)
+      throw OpenSeesError(context() + ": direction " + std::to_string(directions[k]) +
+                          " is not 1-6 (1-3 translation along local x, y, z; 4-6 rotation about them)");
+    springs_.push_back({materials[k]->clone(), directions[k], ForceVector()});
+  }
+}
+
+Matrix3 ZeroLength::axesFromOrientation(const Vector3& x, const Vector3& yp, const std::string& context) {
+  const double xNorm = x.norm();
+  if (!(xNorm > 0.0)) throw OpenSeesError(context + ": -orient: the x vector has zero length");
+  const Vector3 z = x.cross(yp);
+  const double zNorm = z.norm();
+  if (!(zNorm > 1e-12 * xNorm * yp.norm()) || !(zNorm > 0.0))
+    throw OpenSeesError(context + ": -orient: the yp vector is zero or parallel to x");
+  Matrix3 axes;
+  axes.row(0) = x / xNorm;
+  axes.row(2) = z / zNorm;
+  axes.row(1) = axes.row(2).cross(axes.row(0));
+  return axes;
+}
+
+void ZeroLength::setDomain(Domain&) {
+  for (Node* n : nodes())
+    if (n->ndf() != 3 && n->ndf() != 6)
+      throw OpenSeesError(context() + ": node " + std::to_string(n->tag()) + " has " + std::to_string(n->ndf()) +
+                          " dofs; zeroLength in 3D needs nodes with ndf 3 or 6");
+  const int jOffset = nodes()[0]->ndf();
+  const int n = numDOF();
+  for (Spring& s : springs_) {
+    const bool rotation = s.direction > 3;
+    if (rotation)
+      for (Node* node : nodes())
+        if (node->ndf() != 6)
+          throw OpenSeesError(context() + ": direction " + std::to_string(s.direction) +
+                              " is a rotation, but node " + std::to_string(node->tag()) + " has ndf " +
+                              std::to_string(node->ndf()) + " (rotational directions 4-6 need ndf 6 at both nodes)");
+    const int first = rotation ? 3 : 0;
+    const Vector3 axis = localAxes_.row((s.direction - 1) % 3).transpose();
+    s.gradient.setZero(n);
+    s.gradient.segment<3>(first) = -axis;
+    s.gradient.segment<3>(jOffset + first) = axis;
+  }
+  displacement_.setZero(n);
+  velocity_.setZero(n);
+  force_.setZero(n);
+  stiffness_.setZero(n, n);
+  update();
+}
+
+void ZeroLength::update() {
+  const Node& ni = *nodes()[0];
+  const Node& nj = *nodes()[1];
+  const int jOffset = ni.ndf();
+  displacement_.head(jOffset) = ni.trialDisp();
+  displacement_.segment(jOffset, nj.ndf()) = nj.trialDisp();
+  velocity_.head(jOffset) = ni.trialVel();
+  velocity_.segment(jOffset, nj.ndf()) = nj.trialVel();
+  for (Spring& s : springs_) s.material->setTrialStrain(s.gradient.dot(displacement_), s.gradient.dot(velocity_));
+}
+
+void ZeroLength::formStiffness(bool initial) {
+  stiffness_.setZero();
+  for (const Spring& s : springs_) {
+    const double k = initial ? s.material->initialTangent() : s.material->tangent();
+    stiffness_.noalias() += k * (s.gradient * s.gradient.transpose());
+  }
+}
+
+MatrixView ZeroLength::tangentStiff() {
+  formStiffness(false);
+  return MatrixView(stiffness_.data(), stiffness_.rows(), stiffness_.cols());
+}
+
+MatrixView ZeroLength::initialStiff() {
+  formStiffness(true);
+  return MatrixView(stiffness_.data(), stiffness_.rows(), stiffness_.cols());
+}
+
+VectorView ZeroLength::resistingForce() {
+  force_.setZero();
+  for (const Spring& s : springs_) force_ += s.material->stress() * s.gradient;
+  return VectorView(force_.data(), force_.size());
+}
+
+void ZeroLength::commitState() {
+  for (Spring& s : springs_) s.material->commitState();
+}
+
+void ZeroLength::revertToLastCommit() {
+  for (Spring& s : springs_) s.material->revertToLastCommit();
+}
+
+void ZeroLength::revertToStart() {
+  for (Spring& s : springs_) s.material->revertToStart();
+}
+
+Vector ZeroLength::springForces() const {
+  Vector v(springs_.size());
+  for (std::size_t k = 0; k < springs_.size(); ++k) v(k) = springs_[k].material->stress();
+  return v;
+}
+
+Vector ZeroLength::springDeformations() const {
+  Vector v(springs_.size());
+  for (std::size_t k = 0; k < springs_.size(); ++k) v(k) = springs_[k].material->strain();
+  return v;
+}
+
+Response ZeroLength::setResponse(const std::vector<std::string>& args) {
+  if (args.empty()) return {};
+  const std::string& what = args[0];
+  if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    std::vector<std::string> names;
+    const char* const labels[6] = {"Px_", "Py_", "Pz_", "Mx_", "My_", "Mz_"};
+    for (int a = 0; a < 2; ++a)
+      for (int k = 0; k < nodes()[a]->ndf(); ++k) names.push_back(labels[k] + std::to_string(a + 1));
+    return {names, [this] { return Vector(resistingForce()); }};
+  }
+  if (what == "basicForce" || what == "basicForces" || what == "localForce" || what == "localForces")
+    return {Response::numberedNames("f", numSprings()), [this] { return springForces(); }};
+  if (what == "deformation" || what == "deformations" || what == "basicDeformation" ||
+      what == "basicDeformations")
+    return {Response::numberedNames("e", numSprings()), [this] { return springDeformations(); }};
+  if (what == "material" && args.size() >= 2) {
+    int k = 0;
+    const std::string& s = args[1];
+    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), k);
+    if (ec != std::errc() || ptr != s.data() + s.size() || k < 1 || k > numSprings()) return {};
+    return springs_[k - 1].material->setResponse(std::vector<std::string>(args.begin() + 2, args.end()));
+  }
+  return {};
+}
+
+bool ZeroLength::setParameter(const std::vector<std::string>& args, double value) {
+  bool accepted = false;
+  for (Spring& s : springs_) accepted = s.material->setParameter(args, value) || accepted;
+  return accepted;
+}
+
+void ZeroLength::print(std::ostream& os) const {
+  os << "Element " << tag() << " type zeroLength nodes " << nodeTags()[0] << ' ' << nodeTags()[1] << " springs";
+  for (const Spring& s : springs_) os << " (material " << s.material->tag() << ", dir " << s.direction << ')';
+  os << '\n';
+}
+
+namespace {
+
+std::unique_ptr<Element> buildZeroLength(CommandArgs& args, Domain& domain) {
+  const int tag = args.nextInt("eleTag");
+  args.setContext("element zeroLength " + std::to_string(tag));
+  const int iNode = args.nextInt("iNode");
+  const int jNode = args.nextInt("jNode");
+  std::vector<int> matTags, dirs;
+  Matrix3 axes = Matrix3::Identity();
+  bool doRayleigh = false;
+  while (!args.done()) {
+    if (args.nextFlag("-mat")) {
+      matTags = args.nextInts("matTags", 1);
+    } else if (args.nextFlag("-dir")) {
+      dirs = args.nextInts("dirs", 1);
+    } else if (args.nextFlag("-doRayleigh")) {
+      doRayleigh = args.nextInt("rFlag") != 0;
+    } else if (args.nextFlag("-orient")) {
+      const std::size_t at = args.position();
+      const std::vector<double> v = args.nextDoubles("orientation vectors x and yp", 6);
+      if (v.size() != 6) args.failAt(at + 6, "orientation vectors x and yp", "exactly 6 numbers (x1 x2 x3 yp1 yp2 yp3)");
+      axes = ZeroLength::axesFromOrientation(Vector3(v[0], v[1], v[2]), Vector3(v[3], v[4], v[5]), args.context());
+    } else {
+      args.failAt(args.position(), "option", "'-mat', '-dir', '-doRayleigh' or '-orient'");
+    }
+  }
+  if (matTags.empty()) args.fail("missing '-mat' followed by material tags");
+  if (dirs.empty()) args.fail("missing '-dir' followed by directions");
+  if (matTags.size() != dirs.size())
+    args.fail("expected one direction per material, got " + std::to_string(matTags.size()) + " material(s) and " +
+              std::to_string(dirs.size()) + " direction(s)");
+  std::vector<const UniaxialMaterial*> materials;
+  for (int t : matTags) materials.push_back(&domain.uniaxialMaterials.get(t, args.context()));
+  return std::make_unique<ZeroLength>(tag, iNode, jNode, materials, dirs, axes, doRayleigh);
+}
+
+void registerZeroLength(Registry& r) { r.elements.add("zeroLength", &buildZeroLength); }
+
+}  // namespace
+
+BEAMSOLID_REGISTER(registerZeroLength);
+
+}  // namespace beamsolid
