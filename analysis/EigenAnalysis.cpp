@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "analysis/AnalysisModel.h"
@@ -187,15 +187,25 @@ Modes solveSparse(AnalysisModel& model, const std::vector<double>& stiffness, co
   CondensedShiftInvert op(system, p.massed);
   CondensedMass massOp(map, mass, p.massed);
   const int ncv = std::min(nm, std::max(2 * numModes + 1, 20));
-  Spectra::SymGEigsShiftSolver<CondensedShiftInvert, CondensedMass, Spectra::GEigsMode::ShiftInvert> lanczos(
-      op, massOp, numModes, ncv, sigma);
-  lanczos.init();
-  lanczos.compute(Spectra::SortRule::LargestMagn, 1000, 1e-12, Spectra::SortRule::SmallestAlge);
-  if (lanczos.info() != Spectra::CompInfo::Successful)
-    throw OpenSeesError("eigen: the shift-invert Lanczos iteration (Spectra) did not converge for " +
-                        std::to_string(numModes) + " modes");
-  const Vector lambda = lanczos.eigenvalues();
-  const Matrix x = lanczos.eigenvectors();
+  Vector lambda;
+  Matrix x;
+  try {
+    Spectra::SymGEigsShiftSolver<CondensedShiftInvert, CondensedMass, Spectra::GEigsMode::ShiftInvert> lanczos(
+        op, massOp, numModes, ncv, sigma);
+    lanczos.init();
+    lanczos.compute(Spectra::SortRule::LargestMagn, 1000, 1e-12, Spectra::SortRule::SmallestAlge);
+    if (lanczos.info() != Spectra::CompInfo::Successful)
+      throw OpenSeesError("eigen: the shift-invert Lanczos iteration (Spectra) did not converge for " +
+                          std::to_string(numModes) + " modes; try '-fullGenLapack'");
+    lambda = lanczos.eigenvalues();
+    x = lanczos.eigenvectors();
+  } catch (const OpenSeesError&) {
+    system.invalidateFactor();
+    throw;
+  } catch (const std::exception& e) {
+    system.invalidateFactor();
+    throw OpenSeesError(std::string("eigen: the Lanczos solver (Spectra) failed: ") + e.what());
+  }
 
   // The full mode, massless dofs included, and purified of round-off in the
   // massless directions: phi = (lambda - sigma) (K - sigma M)^-1 M phi.
