@@ -1,0 +1,109 @@
+#include "analysis/KrylovNewton.h"
+
+#include <memory>
+
+#include "analysis/AnalysisModel.h"
+#include "analysis/ConvergenceTest.h"
+#include "analysis/Integrator.h"
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+bool KrylovNewton::prepareTangent(AnalysisModel& model, Integrator& integrator, Tangent which) {
+  using S = AnalysisModel::Stiffness;
+  if (which == Tangent::NoTangent && model.system().isFactored()) return true;
+  const S kind = which == Tangent::Initial ? S::Initial : S::Current;
+  if (kind == S::Initial && model.factoredIs(S::Initial)) return true;  // never changes
+  integrator.formTangent(model, kind);
+  ++factorizations_;
+  if (!model.factor(kind)) {
+    singular_ = true;
+    lastError_ = model.describeFactorFailure();
+    return false;
+  }
+  return true;
+}
+
+int KrylovNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator, ConvergenceTest& test) {
+  singular_ = false;
+  lastError_.clear();
+  factorizations_ = 0;
+  corrections_.clear();
+  changes_.clear();
+  LinearSystem& system = model.system();
+  integrator.formUnbalance(model);
+  test.start(system);
+  if (!prepareTangent(model, integrator, increment_)) return -3;
+  Vector previous;  // v of the last iteration, empty after a restart
+  Matrix W, U;
+  for (;;) {
+    system.solve();
+    const Vector v = system.x();
+    if (previous.size() == v.size()) changes_.push_back(previous - v);
+    Vector correction = v;
+    const int dim = static_cast<int>(changes_.size());
+    if (dim > 0) {
+      W.resize(v.size(), dim);
+      U.resize(v.size(), dim);
+      for (int i = 0; i < dim; ++i) {
+        W.col(i) = changes_[i];
+        U.col(i) = corrections_[i];
+      }
+      const Vector c = W.colPivHouseholderQr().solve(v);
+      correction = U * c + (v - W * c);
+    }
+    system.x() = correction;
+    if (integrator.update(model, system.x()) < 0) {
+      lastError_ = "the integrator could not update the step";
+      return -3;
+    }
+    corrections_.push_back(system.x());  // what was applied (path-following integrators add their share)
+    previous = v;
+    integrator.formUnbalance(model);
+    switch (test.test(system)) {
+      case ConvergenceTest::Result::Converged: return 0;
+      case ConvergenceTest::Result::Failed:
+        lastError_ = test.name() + " failed to converge in " + std::to_string(test.numIterations()) +
+                     " iterations (last norm " + std::to_string(test.norms().back()) + ")";
+        return -3;
+      case ConvergenceTest::Result::Continue: break;
+    }
+    if (dim >= maxDimension_) {
+      // The subspace is full: new tangent (per '-iterate'), fresh subspace.
+      corrections_.clear();
+      changes_.clear();
+      previous.resize(0);
+      if (!prepareTangent(model, integrator, iterate_)) return -3;
+    }
+  }
+}
+
+namespace {
+
+KrylovNewton::Tangent readTangent(CommandArgs& args, const char* option) {
+  const std::string t = args.nextString(option);
+  if (t == "current" || t == "Current") return KrylovNewton::Tangent::Current;
+  if (t == "initial" || t == "Initial") return KrylovNewton::Tangent::Initial;
+  if (t == "noTangent" || t == "NoTangent") return KrylovNewton::Tangent::NoTangent;
+  args.fail(std::string(option) + " '" + t + "' is unknown (expected current, initial or noTangent)");
+}
+
+std::unique_ptr<Algorithm> buildKrylovNewton(CommandArgs& args, Domain&) {
+  auto iterate = KrylovNewton::Tangent::Current, increment = KrylovNewton::Tangent::Current;
+  int maxDim = 3;
+  while (!args.done()) {
+    const std::string opt = args.nextString("option");
+    if (opt == "-iterate") iterate = readTangent(args, "-iterate");
+    else if (opt == "-increment") increment = readTangent(args, "-increment");
+    else if (opt == "-maxDim") maxDim = args.nextInt("maxDim");
+    else args.fail("unknown option '" + opt + "' (expected -iterate, -increment or -maxDim)");
+  }
+  if (maxDim < 1) args.fail("-maxDim must be at least 1, got " + std::to_string(maxDim));
+  return std::make_unique<KrylovNewton>(iterate, increment, maxDim);
+}
+
+void registerKrylovNewton(Registry& r) { r.algorithms.add("KrylovNewton", &buildKrylovNewton); }
+
+}  // namespace
+BEAMSOLID_REGISTER(registerKrylovNewton);
+}  // namespace beamsolid
