@@ -17,7 +17,7 @@
 #include "core/TimeSeries.h"
 #include "elements/Element.h"
 
-namespace beamsolid::testing {
+namespace beamsolid::analysistest {
 
 // force and tangent of a spring as functions of its elongation d
 struct SpringLaw {
@@ -142,4 +142,4 @@ struct Model {
   int analyze(int steps) { return analysis->analyze(steps); }
 };
 
-}  // namespace beamsolid::testing
+}  // namespace beamsolid::analysistest

@@ -18,7 +18,7 @@
 #include "core/Node.h"
 #include "core/Registry.h"
 
-namespace beamsolid::testing {
+namespace beamsolid::solidstest {
 
 inline void pushValue(std::vector<CommandArgs::Value>& out, const char* s) { out.emplace_back(std::string(s)); }
 inline void pushValue(std::vector<CommandArgs::Value>& out, const std::string& s) { out.emplace_back(s); }
@@ -193,4 +193,4 @@ class DenseStatics {
   Vector load_;
 };
 
-}  // namespace beamsolid::testing
+}  // namespace beamsolid::solidstest

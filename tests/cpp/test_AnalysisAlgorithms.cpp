@@ -10,7 +10,7 @@
 #include "analysis/NewtonLineSearch.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::analysistest;
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "analysis/EigenAnalysis.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::analysistest;
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include "analysis/ArcLength.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::analysistest;
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "materials/nd/ElasticIsotropic3D.h"
 
 using namespace beamsolid;
-using beamsolid::testing::args;
+using beamsolid::solidstest::args;
 
 namespace {
 

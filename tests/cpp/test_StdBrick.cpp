@@ -16,7 +16,7 @@
 #include "materials/nd/ElasticIsotropic3D.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::solidstest;
 
 namespace {
 

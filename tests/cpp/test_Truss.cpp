@@ -14,7 +14,7 @@
 #include "elements/Truss.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::solidstest;
 
 namespace {
 

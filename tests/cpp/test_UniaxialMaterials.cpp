@@ -11,7 +11,7 @@
 #include "materials/uniaxial/ElasticPPMaterial.h"
 
 using namespace beamsolid;
-using beamsolid::testing::args;
+using beamsolid::solidstest::args;
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "elements/ZeroLength.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::solidstest;
 
 namespace {
 
