@@ -11,6 +11,18 @@ StaticAnalysis::StaticAnalysis(Domain& domain, AnalysisComponents& components)
     : domain_(domain), components_(components), model_(domain) {}
 
 int StaticAnalysis::analyze(int numSteps) {
+  try {
+    return runSteps(numSteps);
+  } catch (...) {
+    // An element or material that throws mid-step (bad state, a Python
+    // element's exception) must not leave a half-updated model behind.
+    domain_.revertToLastCommit();
+    if (components_.integrator) components_.integrator->revert(model_);
+    throw;
+  }
+}
+
+int StaticAnalysis::runSteps(int numSteps) {
   AnalysisComponents& c = components_;
   for (int step = 0; step < numSteps; ++step) {
     if (model_.setup(*c.handler, *c.numberer, *c.solver)) {
@@ -28,11 +40,11 @@ int StaticAnalysis::analyze(int numSteps) {
                    c.algorithm->lastError();
       const bool singularModel = c.algorithm->failedOnSingularMatrix() && stepsSinceSetup_ == 0 &&
                                  domain_.committedTime() == 0.0;
+      // A model that is singular before any step converged is a modelling
+      // error, not a convergence failure: say so loudly (analyze() reverts).
+      if (singularModel) throw OpenSeesError("analyze: the stiffness matrix is singular: " + c.algorithm->lastError());
       domain_.revertToLastCommit();
       c.integrator->revert(model_);
-      // A model that is singular before any step converged is a modelling
-      // error, not a convergence failure: say so loudly.
-      if (singularModel) throw OpenSeesError("analyze: the stiffness matrix is singular: " + c.algorithm->lastError());
       std::cerr << "WARNING analyze: step failed: " << lastError_ << "; the model is back at time "
                 << domain_.currentTime() << "\n";
       return -3;

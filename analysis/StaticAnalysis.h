@@ -37,6 +37,8 @@ class StaticAnalysis {
   const std::string& lastError() const { return lastError_; }
 
  private:
+  int runSteps(int numSteps);
+
   Domain& domain_;
   AnalysisComponents& components_;
   AnalysisModel model_;

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings/Interpreter.h"
+#include "bindings/PythonElement.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
 
@@ -74,6 +75,8 @@ PYBIND11_MODULE(_beamsolid, m) {
       .def("close_recorders", &Interpreter::closeRecorders);
 
   m.def("command_names", &Interpreter::commandNames);
+  m.def("register_element", &beamsolid::PythonElement::registerType, py::arg("name"), py::arg("factory"),
+        "Register a Python element class (a beamsolid.Element subclass) as element type `name`.");
   m.def("registered_types", [](const std::string& kind) {
     auto& r = beamsolid::Registry::global();
     if (kind == "element") return r.elements.types();

@@ -9,11 +9,13 @@ _live_models = weakref.WeakSet()
 
 
 @atexit.register
-def _close_all_recorders():
-    # Recorded data is never lost: flush and close every recorder at exit.
+def _close_all_models():
+    # Recorded data is never lost: flush and close every recorder at exit,
+    # and release Python elements while the interpreter is still whole.
     for model in list(_live_models):
         try:
             model._interp.close_recorders()
+            model._interp.call("wipe")
         except OpenSeesError:
             pass
 
