@@ -122,3 +122,44 @@ def test_same_displacements(reference, handler, numberer, system):
     assert err <= rtol, f"{handler}/{numberer}/{system}: relative difference {err:.2e}"
     if handler != "Penalty":
         assert iterations <= 2  # linear model: one solve, one confirming iteration
+
+
+def test_switching_components_on_a_live_analysis(reference):
+    """constraints()/numberer() after analyze() take effect, however often they change.
+
+    Regression: the analysis noticed a new handler by its address only, and a
+    handler created after two switches can reuse the address of the first one
+    (Plain -> Transformation -> Penalty kept the Plain numbering: 28 equations
+    instead of Penalty's 78).
+    """
+    sizes = {}
+    for handler in HANDLERS:
+        m = beamsolid.Model()
+        build(m, handler, "RCM", "UmfPack")
+        sizes[handler] = m.systemSize()
+        m.wipe()
+    assert sizes["Penalty"] > sizes["Plain"]
+
+    m = beamsolid.Model()
+    build(m, "Plain", "RCM", "UmfPack")
+    assert m.analyze(1) == 0
+    m.integrator("LoadControl", 0.0)  # further steps stay at load factor 1
+    scale = max(np.abs(v).max() for v in reference.values())
+
+    def use(handler):
+        if handler == "Penalty":
+            m.constraints("Penalty", ALPHA, ALPHA)
+        else:
+            m.constraints(handler)
+
+    for _ in range(3):
+        for via, handler in itertools.permutations(HANDLERS, 2):
+            use(via)       # two switches with no step in between
+            use(handler)
+            m.numberer("AMD")
+            m.numberer("Plain")
+            assert m.systemSize() == sizes[handler], handler
+            assert m.analyze(1) == 0
+            err = max(np.abs(np.array(m.nodeDisp(t)) - reference[t]).max() for t in reference) / scale
+            assert err <= (1e-6 if handler == "Penalty" else 1e-10), (handler, err)
+    m.wipe()
