@@ -1,4 +1,5 @@
-"""Every constraint handler x numberer x system gives the same displacements.
+"""Every constraint handler x numberer x system gives the same displacements,
+and support reactions in equilibrium with the load.
 
 The model mixes beam (ndf 6) and brick (ndf 3) nodes, ties them with
 equalDOF and rigidLink (including a chained MP), and imposes a non-zero sp.
@@ -21,6 +22,7 @@ ALPHA = 1e12
 IMPOSED = -1.5e-3
 
 BASE, MID, TOP, HEAD = 101, 102, 103, 104
+LOAD = np.array([5.0, -3.0, -20.0, 1.0, 0.5, -0.7])
 
 
 def top_tag(i, j):
@@ -64,7 +66,7 @@ def build(m, handler, numberer, system):
 
     m.timeSeries("Linear", 1)
     m.pattern("Plain", 1, 1)
-    m.load(HEAD, 5.0, -3.0, -20.0, 1.0, 0.5, -0.7)
+    m.load(HEAD, *LOAD)
     m.sp(top_tag(2, 1), 2, IMPOSED)                              # a free edge node pushed sideways
 
     if handler == "Penalty":
@@ -84,6 +86,13 @@ def solve(handler, numberer, system):
     try:
         build(m, handler, numberer, system)
         assert m.analyze(1) == 0
+        m.reactions()
+        # Statics: the supports (base and imposed sp) take the whole load;
+        # the MP forces between tied nodes cancel in pairs.
+        support = sum(np.array(m.nodeReaction(bottom_tag(i, j))) for i in range(3) for j in range(3))
+        support[1] += m.nodeReaction(top_tag(2, 1), 2)
+        rtol = 1e-6 if handler == "Penalty" else 1e-10
+        assert np.abs(support + LOAD[:3]).max() <= rtol * np.abs(LOAD[:3]).max(), support
         return {t: np.array(m.nodeDisp(t)) for t in m.getNodeTags()}, m.testIter()
     finally:
         m.wipe()
