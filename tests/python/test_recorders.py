@@ -210,6 +210,10 @@ def test_exception_mid_script_leaves_complete_rows(model, tmp_path):
     _, rows, closed = read_xml(xml)
     np.testing.assert_allclose(rows, expected, rtol=1e-15, atol=0.0)
     assert not closed
+    # The failed command left the model as it was: the script could go on.
+    assert 9 not in m.getEleTags()
+    assert m.analyze(1) == 0
+    assert len(read_text(text)) == 4
 
 
 def epp_bar(m):

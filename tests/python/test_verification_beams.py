@@ -281,3 +281,24 @@ def test_simply_supported_beam_under_path_series(model):
         assert_close(m.nodeDisp(1, 6), f * w * L**3 / (24 * E * IZ))
         m.reactions()
         assert_close([m.nodeReaction(1, 2), m.nodeReaction(n_el + 1, 2)], [-f * w * L / 2] * 2)
+
+
+def test_point_load_on_a_skew_cantilever(model):
+    """eleLoad -beamPoint Py Pz xL Px on the first of two elements: tip P a^2 (3L - a) / 6EI."""
+    m = model
+    m.model("basic", "-ndm", 3, "-ndf", 6)
+    m.geomTransf("Linear", 1, *VECXZ)
+    beam_line(m, XI, XJ, 2, 1)
+    m.fix(1, 1, 1, 1, 1, 1, 1)
+    py, pz, px, x_over_l = -3.0, 2.0, 1.5, 0.3
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.eleLoad("-ele", 1, "-type", "-beamPoint", py, pz, x_over_l, px)
+    linear_static(m)
+    R = local_axes(XI, XJ, VECXZ)
+    L = np.linalg.norm(XJ - XI)
+    a = x_over_l * L / 2  # from the fixed end
+    u = np.array(m.nodeDisp(3))
+    assert_close(R @ u[:3], [px * a / (E * A), py * a**2 * (3 * L - a) / (6 * E * IZ),
+                             pz * a**2 * (3 * L - a) / (6 * E * IY)])
+    assert_close((R @ u[3:])[1:], [-pz * a**2 / (2 * E * IY), py * a**2 / (2 * E * IZ)])
