@@ -34,11 +34,15 @@ std::unique_ptr<Product> buildDefault(const Table& table, Domain& domain, const 
 
 Result Interpreter::constraints(CommandArgs& a) {
   components_.handler = buildAnalysisObject<ConstraintHandler>(a, *domain_, Registry::global().constraintHandlers);
+  // A new handler may reuse the address of one freed earlier, so the model's
+  // pointer comparison cannot be trusted to notice the change: renumber.
+  if (analysis_) analysis_->model().invalidate();
   return {};
 }
 
 Result Interpreter::numberer(CommandArgs& a) {
   components_.numberer = buildAnalysisObject<Numberer>(a, *domain_, Registry::global().numberers);
+  if (analysis_) analysis_->model().invalidate();  // as for constraints()
   return {};
 }
 

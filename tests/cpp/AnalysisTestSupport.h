@@ -31,9 +31,11 @@ inline SpringLaw linearLaw(double k) {
 
 // An axial spring along x between two ndf-3 nodes (dofs x, y, rz): only the
 // x dofs carry force. Optional consistent bar mass m/6 [[2,1],[1,2]] on x.
-class TestSpring : public Element {
+// Not named TestSpring: support/TestSpring.h defines that class in the same
+// namespace, and two inline definitions of one name break the ODR.
+class LawSpring : public Element {
  public:
-  TestSpring(int tag, int nodeI, int nodeJ, SpringLaw law, double mass = 0.0)
+  LawSpring(int tag, int nodeI, int nodeJ, SpringLaw law, double mass = 0.0)
       : Element(tag, {nodeI, nodeJ}), law_(std::move(law)), mass_(mass) {}
   std::string className() const override { return "TestSpring"; }
 
@@ -113,7 +115,7 @@ struct Model {
   }
   void fixX(int tag) { domain.addSP({tag, 0, 0.0}, "test"); }
   void addSpring(int tag, int i, int j, SpringLaw law, double mass = 0.0) {
-    domain.addElement(std::make_unique<TestSpring>(tag, i, j, std::move(law), mass), "test");
+    domain.addElement(std::make_unique<LawSpring>(tag, i, j, std::move(law), mass), "test");
   }
   // Pattern 1 with a Linear series: reference load P in x at `node`.
   void addLoad(int node, double P) {

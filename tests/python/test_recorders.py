@@ -1,0 +1,350 @@
+"""Recorder files read back equal the values the queries returned at every step.
+
+Each test records nodeDisp/eleResponse in its own loop and compares the file
+row by row: text and CSV to the printed precision (a value printed with %.Ng
+is within 0.5e-(N-1) relative of the true one), binary exactly. It also checks
+the JSON sidecar, -dT, -closeOnWrite, flushing after a failed step, closing
+on wipe()/remove(), and that a script exiting without wipe() loses nothing.
+"""
+import json
+import os
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+import beamsolid
+
+PYTHON_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "python"))
+PATH_VALUES = [0.0, 1.0, -0.5, 0.8, -1.2, 0.3]  # a Path series that changes sign
+NODES, DOFS = [2, 3, 4], [1, 2, 6]
+BEAMS = [1, 2, 3]
+LOCAL_NAMES = ["N", "Vy", "Vz", "T", "My", "Mz"]
+
+
+def cantilever(m):
+    """A 3-element cantilever along x, a truss from the tip, tip load through a Path series."""
+    m.model("basic", "-ndm", 3, "-ndf", 6)
+    for k in range(4):
+        m.node(k + 1, 1.0 * k, 0.0, 0.0)
+    m.node(5, 3.0, 2.0, 0.0)
+    m.fix(1, 1, 1, 1, 1, 1, 1)
+    m.fix(5, 1, 1, 1, 1, 1, 1)
+    m.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    for k in range(3):
+        m.element("elasticBeamColumn", k + 1, k + 1, k + 2, 0.01, 2.0e8, 8.0e7, 2e-6, 1e-6, 3e-6, 1)
+    m.uniaxialMaterial("Elastic", 1, 2.0e8)
+    m.element("truss", 4, 4, 5, 1e-5, 1)
+    m.timeSeries("Path", 1, "-dt", 1.0, "-values", *PATH_VALUES)
+    m.pattern("Plain", 1, 1)
+    m.load(4, 3.0, 10.0, -5.0, 0.4, 0.0, 2.0)
+    m.constraints("Transformation")
+    m.numberer("RCM")
+    m.system("UmfPack")
+    m.test("NormDispIncr", 1e-12, 10)
+    m.algorithm("Newton")
+    m.integrator("LoadControl", 0.5)
+    m.analysis("Static")
+
+
+def snapshot(m):
+    """What the recorders should write now: time, node dofs, beam local forces, truss force."""
+    nodes = [m.nodeDisp(n, d) for n in NODES for d in DOFS]
+    beams = [v for e in BEAMS for v in m.eleResponse(e, "localForce")]
+    return m.getTime(), nodes, beams, m.eleResponse(4, "axialForce")
+
+
+def read_text(path, delimiter=None):
+    with open(path) as f:
+        text = f.read()
+    assert text == "" or text.endswith("\n"), "a partial row on disk"
+    return np.array([[float(v) for v in line.split(delimiter)] for line in text.splitlines()])
+
+
+def read_xml(path):
+    with open(path) as f:
+        text = f.read()
+    header, _, data = text.partition("<Data>")
+    data = data.partition("</Data>")[0]
+    rows = np.array([[float(v) for v in line.split()] for line in data.strip().splitlines()])
+    return header, rows, "</OpenSees>" in text
+
+
+def read_binary(path):
+    with open(path + ".json") as f:
+        columns = json.load(f)["columnCount"]
+    raw = np.fromfile(path, dtype=np.uint8)
+    row_bytes = 8 * columns + 1
+    assert raw.size % row_bytes == 0, "a partial row on disk"
+    raw = raw.reshape(-1, row_bytes)
+    assert np.all(raw[:, -1] == ord("\n"))
+    return raw[:, :-1].copy().view("<f8")
+
+
+def read(path, fmt):
+    if fmt == "text":
+        return read_text(path)
+    if fmt == "csv":
+        return read_text(path, ",")
+    if fmt == "xml":
+        return read_xml(path)[1]
+    return read_binary(path)
+
+
+FLAGS = {"text": "-file", "csv": "-csv", "xml": "-xml", "binary": "-binary"}
+
+
+@pytest.mark.parametrize("fmt", list(FLAGS))
+@pytest.mark.parametrize("precision", [None, 12])
+def test_rows_equal_the_queried_values(model, tmp_path, fmt, precision):
+    m = model
+    cantilever(m)
+    prec = [] if precision is None else ["-precision", precision]
+    node_file, beam_file, truss_file = (str(tmp_path / f"{n}.{fmt}") for n in ("node", "beam", "truss"))
+    m.recorder("Node", FLAGS[fmt], node_file, "-time", *prec, "-nodeRange", 2, 4, "-dof", *DOFS, "disp")
+    m.recorder("Element", FLAGS[fmt], beam_file, "-time", *prec, "-eleRange", 1, 3, "localForce")
+    m.recorder("Element", FLAGS[fmt], truss_file, *prec, "-ele", 4, "axialForce")
+    expected = []
+    m.record()  # the initial state
+    expected.append(snapshot(m))
+    for _ in range(10):
+        assert m.analyze(1) == 0
+        expected.append(snapshot(m))
+    times = np.array([e[0] for e in expected])
+    assert times[-1] == pytest.approx(5.0)
+    assert np.ptp([e[1][1] for e in expected]) > 0 and min(e[1][1] for e in expected) < 0
+
+    node_rows, beam_rows, truss_rows = (read(f, fmt) for f in (node_file, beam_file, truss_file))
+    want_node = np.array([[t, *n] for t, n, _, _ in expected])
+    want_beam = np.array([[t, *b] for t, _, b, _ in expected])
+    want_truss = np.array([s for _, _, _, s in expected])
+    if fmt == "binary":
+        np.testing.assert_array_equal(node_rows, want_node)
+        np.testing.assert_array_equal(beam_rows, want_beam)
+        np.testing.assert_array_equal(truss_rows, want_truss)
+    else:
+        rtol = 0.5 * 10.0 ** (1 - (precision or 6)) * (1 + 1e-9)
+        for got, want in ((node_rows, want_node), (beam_rows, want_beam), (truss_rows, want_truss)):
+            assert got.shape == want.shape
+            np.testing.assert_allclose(got, want, rtol=rtol, atol=0.0)
+
+    if fmt == "xml":
+        m.wipe()
+        header, _, closed = read_xml(node_file)
+        assert closed
+        for n in NODES:
+            assert f'nodeTag="{n}"' in header
+        assert header.count("<ResponseType>") == 1 + len(NODES) * len(DOFS)
+        assert "<ResponseType>D6</ResponseType>" in header
+        header, _, _ = read_xml(beam_file)
+        assert header.count("<ResponseType>Vy_2</ResponseType>") == 3
+        assert not os.path.exists(node_file + ".json")
+        return
+    # The sidecar names every column in file order.
+    with open(node_file + ".json") as f:
+        side = json.load(f)
+    assert side["format"] == fmt and side["columnCount"] == 1 + len(NODES) * len(DOFS)
+    cols = side["columns"]
+    assert cols[0]["name"] == "time"
+    assert [(c["node"], c["dof"], c["response"]) for c in cols[1:]] == [(n, d, "disp") for n in NODES for d in DOFS]
+    with open(beam_file + ".json") as f:
+        cols = json.load(f)["columns"]
+    assert [(c["element"], c["component"]) for c in cols[1:]] == [
+        (e, f"{name}_{end}") for e in BEAMS for end in (1, 2) for name in LOCAL_NAMES]
+    assert all(c["response"] == "localForce" for c in cols[1:])
+    with open(truss_file + ".json") as f:
+        cols = json.load(f)["columns"]
+    assert [(c["element"], c["response"]) for c in cols] == [(4, "axialForce")]
+
+
+def test_dT_records_only_when_due(model, tmp_path):
+    m = model
+    cantilever(m)
+    m.integrator("LoadControl", 0.1)
+    path = str(tmp_path / "dt.out")
+    dT = 0.25
+    m.recorder("Node", "-file", path, "-time", "-precision", 15, "-dT", dT, "-node", 4, "-dof", 2, "disp")
+    expected, last = [], None
+    for _ in range(12):
+        assert m.analyze(1) == 0
+        t = m.getTime()
+        if last is None or t >= last + dT - 1e-5 * dT:  # the documented rule, with -rTolDt's default
+            expected.append([t, m.nodeDisp(4, 2)])
+            last = t
+    assert [round(r[0], 10) for r in expected] == [0.1, 0.4, 0.7, 1.0]
+    np.testing.assert_allclose(read_text(path), expected, rtol=1e-14, atol=0.0)
+
+
+def test_close_on_write_rows_are_on_disk_after_every_step(model, tmp_path):
+    m = model
+    cantilever(m)
+    path = str(tmp_path / "cow.out")
+    m.recorder("Element", "-file", path, "-closeOnWrite", "-precision", 14, "-ele", 2, "localForce")
+    expected = []
+    for _ in range(4):
+        assert m.analyze(1) == 0
+        expected.append(m.eleResponse(2, "localForce"))
+        np.testing.assert_allclose(read_text(path), expected, rtol=1e-13, atol=0.0)
+
+
+def test_exception_mid_script_leaves_complete_rows(model, tmp_path):
+    """Three steps, then a bad command raises: every row is on disk, nothing closed."""
+    m = model
+    cantilever(m)
+    text, binary, xml = (str(tmp_path / n) for n in ("d.out", "d.bin", "d.xml"))
+    m.recorder("Node", "-file", text, "-precision", 16, "-node", 4, "disp")
+    m.recorder("Node", "-binary", binary, "-node", 4, "disp")
+    m.recorder("Node", "-xml", xml, "-precision", 16, "-node", 4, "disp")
+    expected = []
+    with pytest.raises(beamsolid.OpenSeesError):
+        for step in range(10):
+            if step == 3:
+                m.element("elasticBeamColumn", 9, 1, 42, 0.01, 2e8, 8e7, 2e-6, 1e-6, 3e-6, 1)  # node 42: none
+            assert m.analyze(1) == 0
+            expected.append(m.nodeDisp(4))
+    assert len(expected) == 3
+    np.testing.assert_allclose(read_text(text), expected, rtol=1e-15, atol=0.0)
+    np.testing.assert_array_equal(read_binary(binary), expected)
+    _, rows, closed = read_xml(xml)
+    np.testing.assert_allclose(rows, expected, rtol=1e-15, atol=0.0)
+    assert not closed
+    # The failed command left the model as it was: the script could go on.
+    assert 9 not in m.getEleTags()
+    assert m.analyze(1) == 0
+    assert len(read_text(text)) == 4
+
+
+def epp_bar(m):
+    m.model("basic", "-ndm", 3, "-ndf", 3)
+    m.node(1, 0.0, 0.0, 0.0)
+    m.node(2, 1.0, 0.0, 0.0)
+    m.fix(1, 1, 1, 1)
+    m.fix(2, 0, 1, 1)
+    m.uniaxialMaterial("ElasticPP", 1, 1000.0, 0.01)
+    m.element("truss", 1, 1, 2, 1.0, 1)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(2, 10.0, 0.0, 0.0)  # capacity 10 reached at load factor 1
+    m.constraints("Plain")
+    m.system("UmfPack")
+    m.test("NormUnbalance", 1e-10, 10)
+    m.algorithm("Newton")
+    m.integrator("LoadControl", 0.15)
+    m.analysis("Static")
+
+
+def test_rows_before_a_failed_step_are_flushed(model, tmp_path):
+    m = model
+    epp_bar(m)
+    path = str(tmp_path / "epp.out")
+    m.recorder("Element", "-file", path, "-time", "-precision", 16, "-ele", 1, "axialForce")
+    assert m.analyze(10) < 0  # the 7th step (1.05) exceeds the capacity
+    rows = read_text(path)
+    assert len(rows) == 6
+    np.testing.assert_allclose(rows[:, 0], 0.15 * np.arange(1, 7), rtol=1e-14)
+    np.testing.assert_allclose(rows[:, 1], 10.0 * rows[:, 0], rtol=1e-14)
+    assert rows[-1, 1] == m.eleResponse(1, "axialForce")[0]
+    # Nothing was closed: the next converged step adds its row.
+    m.integrator("LoadControl", 0.05)
+    assert m.analyze(1) == 0
+    assert len(read_text(path)) == 7
+
+
+@pytest.mark.parametrize("how", ["wipe", "remove recorders", "remove recorder"])
+def test_wipe_and_remove_close_files(model, tmp_path, how):
+    m = model
+    cantilever(m)
+    a, b = str(tmp_path / "a.xml"), str(tmp_path / "b.out")
+    tag_a = m.recorder("Node", "-xml", a, "-node", 4, "disp")
+    m.recorder("Node", "-file", b, "-node", 4, "disp")
+    assert m.analyze(2) == 0
+    assert not read_xml(a)[2]
+    if how == "wipe":
+        m.wipe()
+    elif how == "remove recorders":
+        m.remove("recorders")
+    else:
+        m.remove("recorder", tag_a)
+    header, rows, closed = read_xml(a)
+    assert closed and len(rows) == 2
+    if how != "wipe":
+        assert m.analyze(1) == 0
+        assert len(read_xml(a)[1]) == 2                      # closed: no more rows
+        assert len(read_text(b)) == (2 if how == "remove recorders" else 3)
+
+
+SCRIPT = textwrap.dedent("""
+    import sys
+    import beamsolid
+    import beamsolid.opensees as ops
+
+    def build(m, out):
+        m.model('basic', '-ndm', 3, '-ndf', 3)
+        m.node(1, 0.0, 0.0, 0.0)
+        m.node(2, 2.0, 0.0, 0.0)
+        m.fix(1, 1, 1, 1)
+        m.fix(2, 0, 1, 1)
+        m.uniaxialMaterial('Elastic', 1, 100.0)
+        m.element('truss', 1, 1, 2, 1.0, 1)
+        m.timeSeries('Linear', 1)
+        m.pattern('Plain', 1, 1)
+        m.load(2, 5.0, 0.0, 0.0)
+        for ext, flag in (('out', '-file'), ('xml', '-xml'), ('bin', '-binary')):
+            m.recorder('Node', flag, out + '.' + ext, '-time', '-precision', 16, '-node', 2, '-dof', 1, 'disp')
+        m.integrator('LoadControl', 0.1)
+        m.analysis('Static')
+
+    build(ops, sys.argv[1] + '_ops')
+    extra = beamsolid.Model()
+    build(extra, sys.argv[1] + '_model')
+    for step in range(7):
+        ops.analyze(1)
+        extra.analyze(1)
+        if sys.argv[2] == 'raise' and step == 4:
+            raise RuntimeError('the script stops here')
+    # no wipe(): the interpreter's exit must close everything
+""")
+
+
+@pytest.mark.parametrize("ending", ["exit", "raise"])
+def test_script_exiting_without_wipe_keeps_every_row(tmp_path, ending):
+    script = tmp_path / "script.py"
+    script.write_text(SCRIPT)
+    env = dict(os.environ, PYTHONPATH=PYTHON_DIR + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    base = str(tmp_path / "rec")
+    proc = subprocess.run([sys.executable, str(script), base, ending], env=env, capture_output=True, text=True,
+                          timeout=60)
+    steps = 7 if ending == "exit" else 5
+    if ending == "exit":
+        assert proc.returncode == 0, proc.stderr
+    else:
+        assert proc.returncode != 0 and "the script stops here" in proc.stderr
+    t = 0.1 * np.arange(1, steps + 1)
+    want = np.column_stack([t, 5.0 * t * 2.0 / 100.0])  # u = P L / EA
+    for who in ("_ops", "_model"):
+        np.testing.assert_allclose(read_text(base + who + ".out"), want, rtol=1e-14)
+        np.testing.assert_allclose(read_binary(base + who + ".bin"), want, rtol=1e-14)
+        _, rows, closed = read_xml(base + who + ".xml")
+        assert closed, "the XML recorder was not closed at exit"
+        np.testing.assert_allclose(rows, want, rtol=1e-14)
+
+
+def test_envelope_recorders_match_the_recorded_extremes(model, tmp_path):
+    m = model
+    cantilever(m)
+    node_env, ele_env = str(tmp_path / "env_node.out"), str(tmp_path / "env_ele.out")
+    m.recorder("EnvelopeNode", "-file", node_env, "-precision", 16, "-nodeRange", 2, 4, "-dof", *DOFS, "disp")
+    m.recorder("EnvelopeElement", "-file", ele_env, "-precision", 16, "-eleRange", 1, 3, "localForce")
+    history = []
+    for _ in range(10):
+        assert m.analyze(1) == 0
+        _, nodes, beams, _ = snapshot(m)
+        history.append(nodes + beams)
+    m.wipe()
+    h = np.array(history)
+    n = len(NODES) * len(DOFS)
+    for path, cols in ((node_env, h[:, :n]), (ele_env, h[:, n:])):
+        rows = read_text(path)
+        np.testing.assert_allclose(rows, [cols.min(0), cols.max(0), np.abs(cols).max(0)], rtol=1e-15, atol=1e-300)
