@@ -4,13 +4,18 @@
 #include <sstream>
 
 #include "analysis/ConstraintHandler.h"
+#include "analysis/Numberer.h"
 #include "core/Domain.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
 
 bool AnalysisModel::setup(const ConstraintHandler& handler, const Numberer& numberer, LinearSolver& solver) {
-  const bool rebuild = builtStamp_ != domain_.modelStamp() || builtHandler_ != &handler || builtNumberer_ != &numberer;
+  // Compare what the handler and numberer are, not where they live: a new
+  // object may reuse a freed address.
+  const std::string configuration = handler.name() + "/" + std::to_string(handler.alphaS()) + "/" +
+                                    std::to_string(handler.alphaM()) + "/" + numberer.name();
+  const bool rebuild = builtStamp_ != domain_.modelStamp() || builtConfiguration_ != configuration;
   if (solver.requiresSPD() && domain_.needsGeneralSolver()) {
     std::string who;
     for (const auto& [tag, e] : domain_.elements())
@@ -26,8 +31,7 @@ bool AnalysisModel::setup(const ConstraintHandler& handler, const Numberer& numb
     map_.build(domain_, handler, numberer);
     system_.setPattern(map_);
     builtStamp_ = domain_.modelStamp();
-    builtHandler_ = &handler;
-    builtNumberer_ = &numberer;
+    builtConfiguration_ = configuration;
     imposedValues_.assign(map_.imposedFullDofs().size(), 0.0);
   }
   penaltyAlphaS_ = handler.alphaS();

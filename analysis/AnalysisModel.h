@@ -27,7 +27,7 @@ class AnalysisModel {
   // Renumbers and rebuilds the pattern when the Domain, the handler, the
   // numberer or the solver changed since the last call. True if rebuilt.
   bool setup(const ConstraintHandler& handler, const Numberer& numberer, LinearSolver& solver);
-  void invalidate() { builtStamp_ = -1; }
+  void invalidate() { builtStamp_ = -1; builtConfiguration_.clear(); }
 
   const DofMap& dofMap() const { return map_; }
   LinearSystem& system() { return system_; }
@@ -62,8 +62,7 @@ class AnalysisModel {
   DofMap map_;
   LinearSystem system_;
   long builtStamp_ = -1;
-  const void* builtHandler_ = nullptr;
-  const void* builtNumberer_ = nullptr;
+  std::string builtConfiguration_;
   int factoredKind_ = -1;
   double penaltyAlphaS_ = 0.0;
   double penaltyAlphaM_ = 0.0;
