@@ -97,8 +97,9 @@ void BeamContact3D::update() {
   stiffness_(17, 17) = 1.0;
 }
 
-bool BeamContact3D::nextContactStatus() {
-  const bool wasInContact = geometry_.committedGap() < gapTolerance_;
+bool BeamContact3D::nextContactStatus(double convergedGap) {
+  const double gap = inContact_ ? convergedGap : geometry_.committedGap();
+  const bool wasInContact = gap < gapTolerance_;
   return wasInContact && !shouldRelease_ && geometry_.inBounds();
 }
 

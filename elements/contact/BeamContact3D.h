@@ -19,10 +19,15 @@ class Domain;
 // unit stiffness so lambda returns to zero.
 //
 // Contact status (C20) is decided at commit, not inside the Newton loop:
-// in contact next step iff g < gapTol at the re-projected converged state,
-// lambda > -forceTol at the last update, and 0 < xi_c < 1. A change of
-// status is therefore seen one step late; the error this lag makes shrinks
-// with the step size. cSwitch 0 starts in contact, 1 out of contact.
+// in contact next step iff g < gapTol, lambda > -forceTol at the last update,
+// and 0 < xi_c < 1 after re-projection. For a node in contact during the step
+// g is the converged gap at the held projection (the one lambda drove to
+// zero); for a released node it is the re-projected distance. (The
+// re-projected distance of a node in contact exceeds the radius by the
+// tangent-plane drift ~ slip^2 / 2R of a step's circumferential sliding,
+// which would release sliding nodes for any small gapTol.) A change of
+// status is seen one step late; the error this lag makes shrinks with the
+// step size. cSwitch 0 starts in contact, 1 out of contact.
 class BeamContact3D : public BeamContactElement {
  public:
   using Vector18 = Eigen::Matrix<double, 18, 1>;
@@ -49,7 +54,7 @@ class BeamContact3D : public BeamContactElement {
 
  protected:
   void setDomain(Domain& domain) override;
-  bool nextContactStatus() override;
+  bool nextContactStatus(double convergedGap) override;
 
  private:
   // The multiplier node must be free and belong to this element only.

@@ -46,7 +46,7 @@ void BeamContact3Dp::update() {
   stiffness_.noalias() += (penalty_ * Bs * material_->tangentNormal()) * Bn.transpose();
 }
 
-bool BeamContact3Dp::nextContactStatus() {
+bool BeamContact3Dp::nextContactStatus(double) {
   if (geometry_.committedGap() < 0.0) activated_ = true;
   return activated_ && geometry_.inBounds();
 }

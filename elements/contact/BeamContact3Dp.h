@@ -40,7 +40,7 @@ class BeamContact3Dp : public BeamContactElement {
 
  protected:
   void setDomain(Domain& domain) override;
-  bool nextContactStatus() override;
+  bool nextContactStatus(double convergedGap) override;
 
  private:
   double penalty_;

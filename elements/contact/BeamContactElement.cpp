@@ -90,13 +90,14 @@ BeamContactElement::Vector2 BeamContactElement::totalSlip() const {
 
 void BeamContactElement::commitState() {
   committedSlip_ = totalSlip();
+  const double convergedGap = geometry_.gap();
   material_->commitState();
   try {
     geometry_.commit(nodeA(), nodeB(), nodeS());
   } catch (const OpenSeesError& e) {
     throw OpenSeesError(context() + ": " + e.what());
   }
-  inContact_ = nextContactStatus();
+  inContact_ = nextContactStatus(convergedGap);
 }
 
 void BeamContactElement::revertToLastCommit() { material_->revertToLastCommit(); }

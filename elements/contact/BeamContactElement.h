@@ -84,8 +84,9 @@ class BeamContactElement : public Element {
   // Geometry from the nodes' trial state (allocation-free).
   void updateGeometry();
   // The status for the next step from the converged state (C20); called
-  // by commitState() after the geometry was re-projected.
-  virtual bool nextContactStatus() = 0;
+  // by commitState() after the geometry was re-projected. convergedGap is
+  // the step's gap at the held projection (C10), before re-projection.
+  virtual bool nextContactStatus(double convergedGap) = 0;
   // Whether the status at the start is "in contact" (cSwitch == 0).
   bool initiallyInContact() const { return initiallyInContact_; }
 

@@ -440,6 +440,15 @@ TEST(BeamContact3D, StatusIsDecidedAtCommit) {
   auto& e = dynamic_cast<BeamContact3D&>(*m->element);
   ASSERT_TRUE(e.inContact());
   Vector l(3);
+  // Sliding around the pile on the tangent plane (converged gap 0) leaves the
+  // node slip^2 / 2R off the re-projected surface, far beyond gapTol; a node
+  // in contact is judged by its converged gap and stays in contact.
+  m->setDisp(3, Vector(Vector3(0.0, 0.01, 0.0)));
+  e.update();
+  ASSERT_NEAR(m->geometry().gap(), 0.0, 1e-15);
+  m->commit();
+  EXPECT_NEAR(m->geometry().committedGap(), 0.01 * 0.01 / (2 * kRadius), 1e-6);
+  EXPECT_TRUE(e.inContact());
   // Tension beyond forceTol: the step keeps contact, the commit releases it.
   l << -1.0, 0.0, 0.0;
   m->setDisp(4, l);
@@ -455,6 +464,7 @@ TEST(BeamContact3D, StatusIsDecidedAtCommit) {
   m->setDisp(3, Vector(Vector3(0.01, 0.0, 0.0)));
   e.update();
   m->commit();
+  EXPECT_GT(m->geometry().committedGap(), 0.009);
   EXPECT_FALSE(e.inContact());
   // Back within gapTol: in contact again from the next step.
   m->setDisp(3, Vector(Vector3(-1e-3, 0.0, 0.0)));
