@@ -95,6 +95,7 @@ void BeamContact3D::update() {
   force_(17) = l(2);
   stiffness_(16, 16) = 1.0;
   stiffness_(17, 17) = 1.0;
+  storeResponseState();
 }
 
 bool BeamContact3D::nextContactStatus(double convergedGap) {

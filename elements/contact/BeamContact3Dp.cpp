@@ -31,6 +31,7 @@ void BeamContact3Dp::update() {
     material_->release();
     normalForce_ = 0.0;
     mechanicalForce_.setZero();
+    storeResponseState();
     return;
   }
   // C19: t_n = kappa <-g>.
@@ -44,6 +45,7 @@ void BeamContact3Dp::update() {
   stiffness_.noalias() = penalty_ * Bn * Bn.transpose();
   stiffness_.noalias() += Bs * material_->tangentSlip() * Bs.transpose();
   stiffness_.noalias() += (penalty_ * Bs * material_->tangentNormal()) * Bn.transpose();
+  storeResponseState();
 }
 
 bool BeamContact3Dp::nextContactStatus(double) {

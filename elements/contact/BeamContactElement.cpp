@@ -61,35 +61,27 @@ BeamContactElement::Status BeamContactElement::status() const {
   return material_->sliding() ? Status::Sliding : Status::Sticking;
 }
 
-Vector3 BeamContactElement::frictionForce() const {
-  if (!activeInUpdate_) return Vector3::Zero();
-  const Vector2& T = material_->traction();
-  return -(T(0) * geometry_.contravariantBase(0) + T(1) * geometry_.contravariantBase(1));
-}
-
-Vector3 BeamContactElement::contactForce() const {
-  if (!activeInUpdate_) return Vector3::Zero();
-  return normalForce_ * geometry_.normal() + frictionForce();
-}
-
-Vector3 BeamContactElement::forceScalars() const {
-  if (!activeInUpdate_) return Vector3::Zero();
-  const Vector2& T = material_->traction();
-  return Vector3(normalForce_, -T(0) / geometry_.covariantBase(0).norm(),
-                 -T(1) / geometry_.covariantBase(1).norm());
-}
-
-BeamContactElement::Vector2 BeamContactElement::totalSlip() const {
-  Vector2 total = committedSlip_;
-  if (activeInUpdate_) {
-    total(0) += geometry_.slip()(0) * geometry_.covariantBase(0).norm();
-    total(1) += geometry_.slip()(1) * geometry_.covariantBase(1).norm();
+void BeamContactElement::storeResponseState() {
+  const BeamContactGeometry& g = geometry_;
+  gapAtUpdate_ = g.gap();
+  xiAtUpdate_ = g.xi();
+  normalAtUpdate_ = g.normal();
+  if (!activeInUpdate_) {
+    frictionForce_.setZero();
+    forceScalars_.setZero();
+    slipIncrement_.setZero();
+    return;
   }
-  return total;
+  const Vector2& T = material_->traction();
+  const double lengthXi = g.covariantBase(0).norm(), lengthPsi = g.covariantBase(1).norm();
+  frictionForce_ = -(T(0) * g.contravariantBase(0) + T(1) * g.contravariantBase(1));
+  forceScalars_ = Vector3(normalForce_, -T(0) / lengthXi, -T(1) / lengthPsi);
+  slipIncrement_ = Vector2(g.slip()(0) * lengthXi, g.slip()(1) * lengthPsi);
 }
 
 void BeamContactElement::commitState() {
-  committedSlip_ = totalSlip();
+  committedSlip_ += slipIncrement_;
+  slipIncrement_.setZero();
   const double convergedGap = geometry_.gap();
   material_->commitState();
   try {
@@ -115,6 +107,7 @@ void BeamContactElement::revertToStart() {
   normalForce_ = 0.0;
   mechanicalForce_.setZero();
   committedSlip_.setZero();
+  storeResponseState();
 }
 
 bool BeamContactElement::setParameter(const std::vector<std::string>& args, double value) {
@@ -177,11 +170,11 @@ Response BeamContactElement::setResponse(const std::vector<std::string>& args) {
                             "Mz_2"},
                            [this] { return Vector(-mechanicalForce_.head<12>()); });
   if (what == "slip") return Response::named({"s_xi", "s_psi"}, [this] { return Vector(totalSlip()); });
-  if (what == "gap") return Response::named({"gap"}, [this] { return vectorOf({geometry_.gap()}); });
+  if (what == "gap") return Response::named({"gap"}, [this] { return vectorOf({gap()}); });
   if (what == "status")
     return Response::named({"status"}, [this] { return vectorOf({double(static_cast<int>(status()))}); });
-  if (what == "xi") return Response::named({"xi"}, [this] { return vectorOf({geometry_.xi()}); });
-  if (what == "normal") return Response::named({"nx", "ny", "nz"}, [this] { return Vector(geometry_.normal()); });
+  if (what == "xi") return Response::named({"xi"}, [this] { return vectorOf({xi()}); });
+  if (what == "normal") return Response::named({"nx", "ny", "nz"}, [this] { return Vector(normal()); });
   return {};
 }
 
@@ -189,7 +182,7 @@ void BeamContactElement::print(std::ostream& os) const {
   os << context() << ": nodes";
   for (int t : nodeTags()) os << ' ' << t;
   os << ", radius " << radius_ << ", geomTransf " << transf_->tag() << ", nDMaterial " << material_->tag()
-     << ", xi " << geometry_.xi() << ", gap " << geometry_.gap() << (inContact_ ? ", in contact" : ", not in contact")
+     << ", xi " << geometry_.xi() << ", gap " << gapAtUpdate_ << (inContact_ ? ", in contact" : ", not in contact")
      << '\n';
 }
 

@@ -41,17 +41,23 @@ class BeamContactElement : public Element {
   double normalForce() const { return normalForce_; }
   // Status of the last update: separated, sticking or sliding.
   Status status() const;
+  // The following describe the state of the last update() (also after a
+  // commit has re-projected the node), so that recorded values belong together.
   // Contact force acting on the secondary node (global): t_n n - T_alpha g^alpha.
-  Vector3 contactForce() const;
+  Vector3 contactForce() const { return normalForce_ * normalAtUpdate_ + frictionForce_; }
   // Its frictional part, -T_alpha g^alpha.
-  Vector3 frictionForce() const;
+  const Vector3& frictionForce() const { return frictionForce_; }
   // [t_n, friction along g_xi, friction along g_psi] acting on the secondary
   // node (the friction components are -T_alpha / |g_alpha|).
-  Vector3 forceScalars() const;
+  const Vector3& forceScalars() const { return forceScalars_; }
   // Relative slip of the secondary node over the pile surface while in
   // contact, accumulated since the start: [along g_xi, along g_psi] as
   // arc lengths (s^xi |g_xi|, s^psi |g_psi| summed over steps).
-  Vector2 totalSlip() const;
+  Vector2 totalSlip() const { return committedSlip_ + slipIncrement_; }
+  // Gap, xi_c and normal n used by the last update.
+  double gap() const { return gapAtUpdate_; }
+  double xi() const { return xiAtUpdate_; }
+  const Vector3& normal() const { return normalAtUpdate_; }
   // Resisting force on the 15 mechanical dofs [u_a, th_a, u_b, th_b, u_s].
   const Vector15& mechanicalForce() const { return mechanicalForce_; }
 
@@ -83,6 +89,9 @@ class BeamContactElement : public Element {
   void setUpGeometry();
   // Geometry from the nodes' trial state (allocation-free).
   void updateGeometry();
+  // Keeps what the responses report from this update (allocation-free);
+  // derived classes call it at the end of update().
+  void storeResponseState();
   // The status for the next step from the converged state (C20); called
   // by commitState() after the geometry was re-projected. convergedGap is
   // the step's gap at the held projection (C10), before re-projection.
@@ -107,6 +116,13 @@ class BeamContactElement : public Element {
   std::unique_ptr<CrdTransf> transf_;
   bool initiallyInContact_;
   Vector2 committedSlip_ = Vector2::Zero();
+  // Response state of the last update.
+  Vector3 frictionForce_ = Vector3::Zero();
+  Vector3 forceScalars_ = Vector3::Zero();
+  Vector2 slipIncrement_ = Vector2::Zero();
+  double gapAtUpdate_ = 0.0;
+  double xiAtUpdate_ = 0.0;
+  Vector3 normalAtUpdate_ = Vector3::Zero();
 };
 
 // The element's copy of material matTag: a ContactMaterial3D, or a clear

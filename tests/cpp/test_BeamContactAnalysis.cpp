@@ -252,3 +252,119 @@ TEST(BeamContactAnalysis, NewtonConvergesQuadraticallyWhileSlidingInTwoDirection
   EXPECT_NEAR(std::hypot(scalars[1], scalars[2]), mu * scalars[0] + c, 1e-6 * capacity);
   EXPECT_NEAR(scalars[0], P, 1e-2 * P);
 }
+
+TEST(BeamContactAnalysis, DonutPulloutResistanceIsMuTimesTheNormalForces) {
+  // The paper's donut test: a pile (elasticBeamColumn, nodes z = 0..3) pulled
+  // up through a ring of stdBrick soil (inner radius R at the pile surface,
+  // outer radius 1, soil node levels between the beam nodes). Stage 1,
+  // frictionless: the outer boundary is pushed in radially, confining the
+  // pile. Stage 2, friction on: the pile top is pulled up until every contact
+  // slides. Then the pull force equals the sum of mu lambda_i over the
+  // contacts (c = 0), every level's contacts carry the same lambda by
+  // symmetry, and the contact forces are axial.
+  registerTestTypes();
+  Script s;
+  const double muPile = 0.4, Gpile = 2e4;
+  const int nTheta = 8, nRadial = 2;
+  const double radii[nRadial + 1] = {R, 0.65, 1.0};
+  const double levels[] = {0.25, 0.75, 1.25, 1.75};
+  const int nLevels = 4;
+  auto soilNode = [&](int level, int ring, int sector) { return 100 + (level * nTheta + sector) * (nRadial + 1) + ring; };
+
+  s("model", "basic", "-ndm", 3, "-ndf", 6);
+  for (int k = 0; k < 4; ++k) s("node", 1 + k, 0.0, 0.0, double(k));
+  for (int k = 0; k < 4; ++k) s("fix", 1 + k, 0, 0, k == 3 ? 1 : 0, 0, 0, 1);  // no twist; top held in stage 1
+  s("geomTransf", "Linear", 1, 1.0, 0.0, 0.0);
+  const double A = M_PI * R * R, I = M_PI * std::pow(R, 4) / 4.0;
+  for (int k = 0; k < 3; ++k) s("element", "elasticBeamColumn", 1 + k, 1 + k, 2 + k, A, 3e7, 1.2e7, 2 * I, I, I, 1);
+
+  s("model", "basic", "-ndm", 3, "-ndf", 3);
+  s("nDMaterial", "ElasticIsotropic", 2, 1e4, 0.3);
+  s("nDMaterial", "ContactMaterial3D", 1, muPile, Gpile, 0.0, 0.0);
+  for (int k = 0; k < nLevels; ++k)
+    for (int j = 0; j < nTheta; ++j)
+      for (int i = 0; i <= nRadial; ++i) {
+        const double theta = 2.0 * M_PI * j / nTheta;
+        s("node", soilNode(k, i, j), radii[i] * std::cos(theta), radii[i] * std::sin(theta), levels[k]);
+      }
+  int brick = 100;
+  for (int k = 0; k + 1 < nLevels; ++k)
+    for (int j = 0; j < nTheta; ++j)
+      for (int i = 0; i < nRadial; ++i) {
+        const int jn = (j + 1) % nTheta;
+        s("element", "stdBrick", brick++, soilNode(k, i, j), soilNode(k, i + 1, j), soilNode(k, i + 1, jn),
+          soilNode(k, i, jn), soilNode(k + 1, i, j), soilNode(k + 1, i + 1, j), soilNode(k + 1, i + 1, jn),
+          soilNode(k + 1, i, jn), 2);
+      }
+  // One contact per pile-surface soil node, on the segment holding its level.
+  std::vector<int> contacts;
+  for (int k = 0; k < nLevels; ++k)
+    for (int j = 0; j < nTheta; ++j) {
+      const int sNode = soilNode(k, 0, j), lNode = 1000 + sNode, tag = 1000 + sNode;
+      const int segment = int(levels[k]);  // beam nodes segment + 1, segment + 2
+      s("node", lNode, 0.0, 0.0, levels[k]);
+      s("element", "BeamContact3D", tag, 1 + segment, 2 + segment, sNode, lNode, R, 1, 1, 1e-8, 1e-8);
+      contacts.push_back(tag);
+    }
+  s("updateMaterialStage", "-material", 1, "-stage", 0);
+
+  // Stage 1: confinement by an inward radial displacement of the outer ring.
+  const double squeeze = 2e-3;
+  s("timeSeries", "Linear", 1);
+  s("pattern", "Plain", 1, 1);
+  for (int k = 0; k < nLevels; ++k)
+    for (int j = 0; j < nTheta; ++j) {
+      const int n = soilNode(k, nRadial, j);
+      const double theta = 2.0 * M_PI * j / nTheta;
+      s("sp", n, 1, -squeeze * std::cos(theta));
+      s("sp", n, 2, -squeeze * std::sin(theta));
+      s("sp", n, 3, 0.0);
+    }
+  staticAnalysis(s, 0.5, "NormUnbalance", 1e-9);
+  ASSERT_EQ(s.integer("analyze", 2), 0);
+  double normalSum = 0.0;
+  for (int tag : contacts) {
+    const auto f = s.list("eleResponse", tag, "forcescalar");
+    EXPECT_GT(f[0], 0.0) << "contact " << tag;
+    EXPECT_NEAR(f[1], 0.0, 1e-12) << "frictionless stage";
+    normalSum += f[0];
+  }
+  s("loadConst", "-time", 0.0);
+  s("wipeAnalysis");
+
+  // Stage 2: friction on, the pile top pulled up.
+  s("updateMaterialStage", "-material", 1, "-stage", 1);
+  s("remove", "sp", 4, 3);
+  s("timeSeries", "Linear", 2);
+  s("pattern", "Plain", 2, 2);
+  s("sp", 4, 3, 0.02);
+  staticAnalysis(s, 0.05, "NormUnbalance", 1e-9);
+  ASSERT_EQ(s.integer("analyze", 20), 0);
+
+  double frictionSum = 0.0, muLambdaSum = 0.0;
+  Vector3 onPile = Vector3::Zero();
+  for (int k = 0; k < nLevels; ++k) {
+    const double lambda0 = s.list("eleResponse", contacts[k * nTheta], "forcescalar")[0];
+    for (int j = 0; j < nTheta; ++j) {
+      const int tag = contacts[k * nTheta + j];
+      const auto f = s.list("eleResponse", tag, "forcescalar");
+      EXPECT_EQ(s.list("eleResponse", tag, "status")[0], 2.0) << "contact " << tag << " slides";
+      EXPECT_NEAR(f[0], lambda0, 1e-8 * lambda0) << "symmetry at level " << k;
+      EXPECT_NEAR(f[1], muPile * f[0], 1e-8 * muPile * f[0]) << "contact " << tag;
+      EXPECT_NEAR(f[2], 0.0, 1e-8 * f[1]) << "contact " << tag;
+      frictionSum += f[1];
+      muLambdaSum += muPile * f[0];
+      const auto m = s.list("eleResponse", tag, "masterforce");
+      onPile += Vector3(m[0] + m[3], m[1] + m[4], m[2] + m[5]);
+    }
+  }
+  EXPECT_NEAR(frictionSum, muLambdaSum, 1e-8 * muLambdaSum);
+  // The contacts pull the pile down with the friction sum, laterally nothing.
+  EXPECT_NEAR(onPile.z(), -frictionSum, 1e-8 * frictionSum);
+  EXPECT_LE(std::hypot(onPile.x(), onPile.y()), 1e-8 * frictionSum);
+  // The support at the pile top carries it.
+  s("reactions");
+  EXPECT_NEAR(s.number("nodeReaction", 4, 3), frictionSum, 1e-6 * frictionSum);
+  // Friction raised the confinement only slightly (Poisson effect of the shear).
+  EXPECT_NEAR(muLambdaSum / muPile, normalSum, 0.1 * normalSum);
+}
