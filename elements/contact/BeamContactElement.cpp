@@ -134,6 +134,12 @@ std::string lower(std::string s) {
   return s;
 }
 
+// Responses print without negative zeros (-0.0 + 0.0 is +0.0).
+Vector clean(Vector v) {
+  v.array() += 0.0;
+  return v;
+}
+
 Vector vectorOf(std::initializer_list<double> values) {
   Vector v(static_cast<Eigen::Index>(values.size()));
   Eigen::Index i = 0;
@@ -147,34 +153,34 @@ Response BeamContactElement::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
   const std::string what = lower(args[0]);
   if (what == "force")
-    return Response::named({"Fx", "Fy", "Fz"}, [this] { return Vector(contactForce()); });
+    return Response::named({"Fx", "Fy", "Fz"}, [this] { return clean(contactForce()); });
   if (what == "frictionforce")
-    return Response::named({"Fx", "Fy", "Fz"}, [this] { return Vector(frictionForce()); });
+    return Response::named({"Fx", "Fy", "Fz"}, [this] { return clean(frictionForce()); });
   if (what == "forcescalar")
-    return Response::named({"N", "T1", "T2"}, [this] { return Vector(forceScalars()); });
+    return Response::named({"N", "T1", "T2"}, [this] { return clean(forceScalars()); });
   // Contact actions on the beam nodes: minus the element's resisting force there.
   if (what == "masterforce" || what == "primaryforce")
     return Response::named({"Fx_1", "Fy_1", "Fz_1", "Fx_2", "Fy_2", "Fz_2"}, [this] {
       Vector v(6);
       v << -mechanicalForce_.segment<3>(0), -mechanicalForce_.segment<3>(6);
-      return v;
+      return clean(v);
     });
   if (what == "mastermoment" || what == "primarymoment")
     return Response::named({"Mx_1", "My_1", "Mz_1", "Mx_2", "My_2", "Mz_2"}, [this] {
       Vector v(6);
       v << -mechanicalForce_.segment<3>(3), -mechanicalForce_.segment<3>(9);
-      return v;
+      return clean(v);
     });
   if (what == "masterreaction" || what == "primaryreaction")
     return Response::named({"Fx_1", "Fy_1", "Fz_1", "Mx_1", "My_1", "Mz_1", "Fx_2", "Fy_2", "Fz_2", "Mx_2", "My_2",
                             "Mz_2"},
-                           [this] { return Vector(-mechanicalForce_.head<12>()); });
-  if (what == "slip") return Response::named({"s_xi", "s_psi"}, [this] { return Vector(totalSlip()); });
+                           [this] { return clean(-mechanicalForce_.head<12>()); });
+  if (what == "slip") return Response::named({"s_xi", "s_psi"}, [this] { return clean(totalSlip()); });
   if (what == "gap") return Response::named({"gap"}, [this] { return vectorOf({gap()}); });
   if (what == "status")
     return Response::named({"status"}, [this] { return vectorOf({double(static_cast<int>(status()))}); });
   if (what == "xi") return Response::named({"xi"}, [this] { return vectorOf({xi()}); });
-  if (what == "normal") return Response::named({"nx", "ny", "nz"}, [this] { return Vector(normal()); });
+  if (what == "normal") return Response::named({"nx", "ny", "nz"}, [this] { return clean(normal()); });
   return {};
 }
 

@@ -174,21 +174,29 @@ double BeamContactGeometry::project(const Vector3& x, double xiStart) const {
   };
   const double tolerance = 1e-13 * L * L;
 
+  // Newton from the previous projection: the usual path, a few iterations.
   double xi = std::isfinite(xiStart) ? xiStart : 0.5;
-  for (int it = 0; it < 25; ++it) {
+  bool converged = false;
+  for (int it = 0; it < 25 && !converged; ++it) {
     double R, dR;
     residual(xi, R, dR);
     projectionIterations_ = it + 1;
     if (!std::isfinite(R) || !std::isfinite(dR) || dR >= 0.0) break;  // not heading for a minimum
-    if (std::abs(R) <= tolerance) return xi;
+    if (std::abs(R) <= tolerance) {
+      converged = true;
+      break;
+    }
     const double step = std::clamp(-R / dR, -0.25, 0.25);
     xi += step;
-    if (std::abs(step) <= 1e-13) return xi;
+    if (std::abs(step) <= 1e-13) converged = true;
     if (xi < -1.0 || xi > 2.0) break;
   }
+  if (converged && xi >= 0.0 && xi <= 1.0) return xi;
 
-  // Fallback: the smallest sampled distance on an extended range, then a
-  // bracketed Newton-bisection on R (D = |x - phi|^2 has D' = -2R).
+  // Fallback, and the check of a Newton result beyond the segment (the
+  // extrapolated cubic can have spurious minima there): the smallest sampled
+  // distance on an extended range, then a bracketed Newton-bisection on R
+  // (D = |x - phi|^2 has D' = -2R).
   projectionFallback_ = true;
   constexpr int samples = 80;
   constexpr double lo0 = -0.5, hi0 = 1.5;
@@ -202,6 +210,7 @@ double BeamContactGeometry::project(const Vector3& x, double xiStart) const {
       bestDistance = dist;
     }
   }
+  if (converged && (x - centerline(xi)).squaredNorm() <= bestDistance) return xi;
   // The closest point lies beyond the sampled range: certainly out of bounds.
   if (best == 0) return lo0;
   if (best == samples) return hi0;

@@ -81,9 +81,15 @@ class BeamContactGeometry {
   Vector3 centerlineCurvature(double xi) const;  // phi''
   // Transported frame at xi (C6) and, if wanted, its xi-derivative.
   void frameAt(double xi, Matrix3& frame, Matrix3* derivative) const;
-  // Closest point (C4) of x on the committed centerline, by Newton from
-  // xiStart with a sampled, bracketed fallback. A closest point beyond the
-  // segment comes back outside (0, 1). Throws OpenSeesError on failure.
+  // Closest point (C4) of x on the committed centerline. Newton from xiStart
+  // (the previous projection) is accepted when it converges inside [0, 1];
+  // otherwise (no convergence, R' >= 0, or a result beyond the segment, where
+  // the extrapolated cubic may have spurious minima) the closest of 81
+  // samples on [-0.5, 1.5] is refined by bracketed Newton-bisection. A
+  // closest point beyond the segment comes back outside (0, 1). For a point
+  // beyond the centre of curvature of a strongly bent segment two local
+  // closest points may exist and the one nearer the start wins. Throws
+  // OpenSeesError when the geometry is degenerate or the refinement fails.
   double project(const Vector3& x, double xiStart) const;
 
   static void hermite(double xi, double h[4], double dh[4], double ddh[4]);

@@ -220,6 +220,47 @@ TEST(BeamContact3D, ProjectionMatchesBruteForceOnADeflectedBeam) {
   }
 }
 
+TEST(BeamContact3D, ProjectionFallbackFindsTheSameClosestPointFromBadStarts) {
+  // A segment bent by +-0.6 rad at its ends (a 70 degree arc). Newton from
+  // far starts leaves the segment or meets R' >= 0; the sampled, bracketed
+  // fallback must land on the same closest point as Newton from a good start.
+  const Vector3 xa(0.0, 0.0, 0.0), xb(0.0, 0.0, 3.0);
+  auto m = makeModel(xa, xb, Vector3(1.0, 0.0, 1.5), false, 1, Vector3(1.0, 0.0, 0.0));
+  Vector6 ua = Vector6::Zero(), ub = Vector6::Zero();
+  ua(4) = 0.6;
+  ub(4) = -0.6;
+  m->setDisp(1, ua);
+  m->setDisp(2, ub);
+  m->element->update();
+  m->commit();
+  const BeamContactGeometry& g = m->geometry();
+  int fallbacks = 0;
+  for (double x : {0.2, 0.5, 1.0, -0.5}) {
+    const Vector3 point(x, 0.0, 1.2);
+    const double reference = g.project(point, 0.5);
+    ASSERT_FALSE(g.projectionUsedFallback());
+    // Brute force on the segment.
+    double bestXi = 0.0, bestDistance = 1e300;
+    for (int k = 0; k <= 100000; ++k) {
+      const double xi = k / 100000.0;
+      const double dist = (point - g.centerline(xi)).norm();
+      if (dist < bestDistance) {
+        bestDistance = dist;
+        bestXi = xi;
+      }
+    }
+    EXPECT_NEAR(reference, bestXi, 2e-5) << "x " << x;
+    for (double start : {-0.9, 0.0, 1.0, 1.9}) {
+      EXPECT_NEAR(g.project(point, start), reference, 1e-11) << "x " << x << " start " << start;
+      fallbacks += g.projectionUsedFallback();
+    }
+  }
+  EXPECT_GE(fallbacks, 2);
+  // Beyond the centre of curvature no interior point is closest: out of bounds.
+  const double beyond = g.project(Vector3(-3.0, 0.0, 1.2), 0.5);
+  EXPECT_TRUE(beyond < 0.0 || beyond > 1.0) << beyond;
+}
+
 TEST(BeamContact3D, ProjectionOutsideTheSegmentIsOutOfBoundsAndReleases) {
   const Vector3 xa(0.0, 0.0, 0.0), xb(0.0, 0.0, 2.0);
   auto above = makeModel(xa, xb, Vector3(0.3, 0.0, 2.4), false);
