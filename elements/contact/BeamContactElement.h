@@ -8,8 +8,6 @@
 
 namespace beamsolid {
 
-class NDMaterial;
-
 // What BeamContact3D (Lagrange multiplier) and BeamContact3Dp (penalty) share:
 // the beam segment a-b with its geometric transformation, the secondary node
 // s, the surface geometry and kinematics (BeamContactGeometry), the element's
