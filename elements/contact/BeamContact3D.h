@@ -1,0 +1,74 @@
+#pragma once
+#include "elements/contact/BeamContactElement.h"
+
+namespace beamsolid {
+
+class Domain;
+
+// Frictional beam-solid contact with a Lagrange multiplier for the normal
+// force (Arduino, Petek & Mackenzie-Helnwein 2007; beam_contact_formulation.md):
+//   element('BeamContact3D', tag, iNode, jNode, sNode, lNode, radius, transfTag,
+//           matTag, gapTol, forceTol, <cSwitch=0>)
+// iNode, jNode: beam nodes (ndf 6); sNode: solid node (ndf 3); lNode: this
+// element's own multiplier node (ndf 3, free, used by no other element): its
+// first dof is the normal force lambda (positive = compression), the other
+// two are inert. 18 dofs [u_a, th_a, u_b, th_b, u_s, lambda, -, -].
+//
+// In contact (C17, C18): F = lambda B_n + T_alpha B_s^alpha, F_lambda = -g;
+// out of contact: no force on the mechanical dofs and F_lambda = lambda with
+// unit stiffness so lambda returns to zero.
+//
+// Contact status (C20) is decided at commit, not inside the Newton loop:
+// in contact next step iff g < gapTol, lambda > -forceTol at the last update,
+// and 0 < xi_c < 1 after re-projection. For a node in contact during the step
+// g is the converged gap at the held projection (the one lambda drove to
+// zero); for a released node it is the re-projected distance. (The
+// re-projected distance of a node in contact exceeds the radius by the
+// tangent-plane drift ~ slip^2 / 2R of a step's circumferential sliding,
+// which would release sliding nodes for any small gapTol.) A change of
+// status is seen one step late; the error this lag makes shrinks with the
+// step size. cSwitch 0 starts in contact, 1 out of contact.
+class BeamContact3D : public BeamContactElement {
+ public:
+  using Vector18 = Eigen::Matrix<double, 18, 1>;
+  using Matrix18 = Eigen::Matrix<double, 18, 18>;
+
+  BeamContact3D(int tag, int iNode, int jNode, int sNode, int lNode, double radius, std::unique_ptr<CrdTransf> transf,
+                std::unique_ptr<ContactMaterial3D> material, double gapTolerance, double forceTolerance,
+                int cSwitch);
+
+  std::string className() const override { return "BeamContact3D"; }
+
+  void update() override;
+  MatrixView tangentStiff() override { return viewOf(stiffness_); }
+  // The current tangent (contact has no meaningful initial stiffness).
+  MatrixView initialStiff() override { return viewOf(stiffness_); }
+  VectorView resistingForce() override { return viewOf(force_); }
+
+  // Lambda of the trial state (dof 1 of the multiplier node).
+  double lambda() const;
+  // lambda <= -forceTol at the last update: contact is released at commit.
+  bool shouldRelease() const { return shouldRelease_; }
+  double gapTolerance() const { return gapTolerance_; }
+  double forceTolerance() const { return forceTolerance_; }
+
+ protected:
+  void setDomain(Domain& domain) override;
+  bool nextContactStatus(double convergedGap) override;
+
+ private:
+  // The multiplier node must be free and belong to this element only.
+  void checkMultiplierNode() const;
+
+  double gapTolerance_, forceTolerance_;
+  bool shouldRelease_ = false;
+  // Not owned: the domain this element belongs to, to re-check the
+  // multiplier node when the model changes.
+  const Domain* domain_ = nullptr;
+  long checkedStamp_ = -1;
+
+  Vector18 force_ = Vector18::Zero();
+  Matrix18 stiffness_ = Matrix18::Zero();
+};
+
+}  // namespace beamsolid
