@@ -16,7 +16,7 @@
 #include "elements/contact/BeamContact3Dp.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::solidstest;
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "materials/nd/ContactMaterial3D.h"
 
 using namespace beamsolid;
-using namespace beamsolid::testing;
+using namespace beamsolid::solidstest;
 
 namespace {
 
