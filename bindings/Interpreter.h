@@ -65,6 +65,13 @@ class Interpreter {
   Result setParameter(CommandArgs&);
   Result updateMaterialStage(CommandArgs&);
 
+  // --- sections and beam integration (InterpreterSections.cpp) ---
+  Result section(CommandArgs&);
+  Result patch(CommandArgs&);
+  Result layer(CommandArgs&);
+  Result fiber(CommandArgs&);
+  Result beamIntegration(CommandArgs&);
+
   // --- analysis (InterpreterAnalysis.cpp) ---
   Result constraints(CommandArgs&);
   Result numberer(CommandArgs&);
@@ -112,6 +119,8 @@ class Interpreter {
   int ndm_ = 0;
   int ndf_ = 0;
   int currentPatternTag_ = -1;
+  // patch, layer and fiber add to the most recent section.
+  int currentSectionTag_ = -1;
   bool haveAnalysis_ = false;
   AnalysisComponents components_;
   std::unique_ptr<StaticAnalysis> analysis_;

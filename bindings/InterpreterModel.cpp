@@ -19,6 +19,7 @@ Result Interpreter::wipe(CommandArgs& a) {
   domain_ = std::make_unique<Domain>();
   ndm_ = ndf_ = 0;
   currentPatternTag_ = -1;
+  currentSectionTag_ = -1;
   eigenvalues_.clear();
   return {};
 }

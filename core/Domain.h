@@ -16,6 +16,9 @@
 
 namespace beamsolid {
 
+class SectionForceDeformation;
+class BeamIntegration;
+
 // The model and nothing about solving it: nodes, elements, constraints,
 // load patterns, recorders, and the definitions (materials, transforms,
 // time series) that commands refer to by tag.
@@ -67,6 +70,9 @@ class Domain {
   TaggedStore<NDMaterial> ndMaterials{"nDMaterial"};
   TaggedStore<CrdTransf> geomTransfs{"geomTransf"};
   TaggedStore<TimeSeries> timeSeries{"timeSeries"};
+  // Prototypes that beam-column elements copy (sections) or read (rules).
+  TaggedStore<SectionForceDeformation> sections{"section"};
+  TaggedStore<BeamIntegration> beamIntegrations{"beamIntegration"};
 
   // --- recorders ---------------------------------------------------------------
   int addRecorder(std::unique_ptr<Recorder> recorder);

@@ -1,0 +1,172 @@
+// Section and beam-integration commands of the Interpreter: section, patch,
+// layer, fiber (which add to the most recent section, as in OpenSeesPy) and
+// beamIntegration.
+#include <array>
+#include <cmath>
+
+#include "bindings/Interpreter.h"
+#include "core/OpenSeesError.h"
+#include "core/Registry.h"
+#include "sections/BeamIntegration.h"
+#include "sections/FiberGeometry.h"
+#include "sections/FiberSection3d.h"
+
+namespace beamsolid {
+
+using Result = Interpreter::Result;
+
+namespace {
+
+template <class Product, class Table>
+std::unique_ptr<Product> buildFromRegistry(CommandArgs& a, Domain& domain, const Table& table) {
+  const std::string type = a.nextString("type");
+  if (!table.has(type)) {
+    std::string known;
+    for (const auto& t : table.types()) known += (known.empty() ? "" : ", ") + t;
+    a.fail("type '" + type + "' is unknown (known: " + known + ")");
+  }
+  a.setContext(a.command() + " " + type);
+  return table.get(type)(a, domain);
+}
+
+FiberSection3d& currentFiberSection(const Domain& domain, int tag, const CommandArgs& a) {
+  if (tag < 0) a.fail("no section to add fibers to: call section('Fiber', secTag, '-GJ', GJ) first");
+  SectionForceDeformation* s = domain.sections.find(tag);
+  if (!s) a.fail("the most recent section (" + std::to_string(tag) + ") no longer exists");
+  auto* fibers = dynamic_cast<FiberSection3d*>(s);
+  if (!fibers)
+    a.fail("the most recent section (" + s->className() + " " + std::to_string(tag) +
+           ") is not a Fiber section; fibers need section('Fiber', ...)");
+  return *fibers;
+}
+
+int readCount(CommandArgs& a, const char* what) {
+  const std::size_t at = a.position();
+  const int n = a.nextInt(what);
+  if (n < 1) a.failAt(at, what, "an integer >= 1");
+  return n;
+}
+
+double readPositive(CommandArgs& a, const char* what) {
+  const std::size_t at = a.position();
+  const double v = a.nextDouble(what);
+  if (!(v > 0.0)) a.failAt(at, what, "a positive number");
+  return v;
+}
+
+void addFibers(FiberSection3d& section, const UniaxialMaterial& material, const std::vector<FiberPoint>& points) {
+  for (const FiberPoint& p : points) section.addFiber(material, p.y, p.z, p.area);
+}
+
+}  // namespace
+
+Result Interpreter::section(CommandArgs& a) {
+  std::shared_ptr<SectionForceDeformation> s = buildFromRegistry<SectionForceDeformation>(a, *domain_, Registry::global().sections);
+  const int tag = s->tag();
+  domain_->sections.add(tag, s, a.context());
+  currentSectionTag_ = tag;
+  return {};
+}
+
+Result Interpreter::patch(CommandArgs& a) {
+  const std::string type = a.nextString("type");
+  a.setContext("patch " + type + (currentSectionTag_ >= 0 ? " (section " + std::to_string(currentSectionTag_) + ")" : ""));
+  FiberSection3d& section = currentFiberSection(*domain_, currentSectionTag_, a);
+  const int matTag = a.nextInt("matTag");
+  const UniaxialMaterial& material = domain_->uniaxialMaterials.get(matTag, a.context());
+  if (type == "rect" || type == "rectangular") {
+    const int ny = readCount(a, "numSubdivY");
+    const int nz = readCount(a, "numSubdivZ");
+    const double yI = a.nextDouble("yI"), zI = a.nextDouble("zI");
+    const double yJ = a.nextDouble("yJ"), zJ = a.nextDouble("zJ");
+    a.expectEnd();
+    if (yI == yJ || zI == zJ) a.fail("the rectangle has no area: corners (yI, zI) and (yJ, zJ) must differ in y and z");
+    addFibers(section, material, fibergeometry::rectPatch(ny, nz, yI, zI, yJ, zJ));
+  } else if (type == "quad" || type == "quadr" || type == "quadrilateral") {
+    const int nIJ = readCount(a, "numSubdivIJ");
+    const int nJK = readCount(a, "numSubdivJK");
+    std::array<Eigen::Vector2d, 4> v;
+    static const char* const names[4][2] = {{"yI", "zI"}, {"yJ", "zJ"}, {"yK", "zK"}, {"yL", "zL"}};
+    for (int k = 0; k < 4; ++k) {
+      v[k].x() = a.nextDouble(names[k][0]);
+      v[k].y() = a.nextDouble(names[k][1]);
+    }
+    a.expectEnd();
+    double twiceArea = 0.0;
+    for (int k = 0; k < 4; ++k) twiceArea += v[k].x() * v[(k + 1) % 4].y() - v[(k + 1) % 4].x() * v[k].y();
+    if (!(std::fabs(twiceArea) > 0.0)) a.fail("the quadrilateral I-J-K-L has no area");
+    addFibers(section, material, fibergeometry::quadPatch(nIJ, nJK, v));
+  } else if (type == "circ" || type == "circular") {
+    const int nCirc = readCount(a, "numSubdivCirc");
+    const int nRad = readCount(a, "numSubdivRad");
+    const double yC = a.nextDouble("yCenter"), zC = a.nextDouble("zCenter");
+    std::size_t at = a.position();
+    const double inner = a.nextDouble("intRad");
+    if (!(inner >= 0.0)) a.failAt(at, "intRad", "a radius >= 0");
+    at = a.position();
+    const double outer = a.nextDouble("extRad");
+    if (!(outer > inner)) a.failAt(at, "extRad", "a radius larger than intRad (" + std::to_string(inner) + ")");
+    double start = 0.0, end = 360.0;
+    if (!a.done()) {
+      start = a.nextDouble("startAng");
+      end = a.nextDouble("endAng");
+    }
+    a.expectEnd();
+    if (start == end) a.fail("startAng and endAng are equal: the patch has no area");
+    addFibers(section, material, fibergeometry::circPatch(nCirc, nRad, yC, zC, inner, outer, start, end));
+  } else {
+    a.fail("patch type '" + type + "' is unknown (expected rect, quad or circ)");
+  }
+  return {};
+}
+
+Result Interpreter::layer(CommandArgs& a) {
+  const std::string type = a.nextString("type");
+  a.setContext("layer " + type + (currentSectionTag_ >= 0 ? " (section " + std::to_string(currentSectionTag_) + ")" : ""));
+  FiberSection3d& section = currentFiberSection(*domain_, currentSectionTag_, a);
+  const int matTag = a.nextInt("matTag");
+  const UniaxialMaterial& material = domain_->uniaxialMaterials.get(matTag, a.context());
+  const int n = readCount(a, "numFiber");
+  const double area = readPositive(a, "areaFiber");
+  if (type == "straight") {
+    const double yS = a.nextDouble("yStart"), zS = a.nextDouble("zStart");
+    const double yE = a.nextDouble("yEnd"), zE = a.nextDouble("zEnd");
+    a.expectEnd();
+    addFibers(section, material, fibergeometry::straightLayer(n, area, yS, zS, yE, zE));
+  } else if (type == "circ" || type == "circular") {
+    const double yC = a.nextDouble("yCenter"), zC = a.nextDouble("zCenter");
+    const double radius = readPositive(a, "radius");
+    // Default: n fibers evenly around the full circle.
+    double start = 0.0, end = 360.0 - 360.0 / n;
+    if (!a.done()) {
+      start = a.nextDouble("startAng");
+      end = a.nextDouble("endAng");
+    }
+    a.expectEnd();
+    addFibers(section, material, fibergeometry::circLayer(n, area, yC, zC, radius, start, end));
+  } else {
+    a.fail("layer type '" + type + "' is unknown (expected straight or circ)");
+  }
+  return {};
+}
+
+Result Interpreter::fiber(CommandArgs& a) {
+  if (currentSectionTag_ >= 0) a.setContext("fiber (section " + std::to_string(currentSectionTag_) + ")");
+  FiberSection3d& section = currentFiberSection(*domain_, currentSectionTag_, a);
+  const double y = a.nextDouble("yLoc");
+  const double z = a.nextDouble("zLoc");
+  const double area = readPositive(a, "A");
+  const int matTag = a.nextInt("matTag");
+  a.expectEnd();
+  section.addFiber(domain_->uniaxialMaterials.get(matTag, a.context()), y, z, area);
+  return {};
+}
+
+Result Interpreter::beamIntegration(CommandArgs& a) {
+  std::shared_ptr<BeamIntegration> rule =
+      buildFromRegistry<BeamIntegration>(a, *domain_, Registry::global().beamIntegrations);
+  domain_->beamIntegrations.add(rule->tag(), rule, a.context());
+  return {};
+}
+
+}  // namespace beamsolid

@@ -1,0 +1,329 @@
+#include "elements/SectionBeamColumn3d.h"
+
+#include <variant>
+
+#include "core/CommandArgs.h"
+#include "core/Domain.h"
+#include "core/Node.h"
+#include "core/OpenSeesError.h"
+
+namespace beamsolid {
+
+SectionBeamColumn3d::SectionBeamColumn3d(int tag, Definition&& d)
+    : Element(tag, {d.nodeI, d.nodeJ}),
+      transf_(std::move(d.transf)),
+      integration_(std::move(d.integration)),
+      sections_(std::move(d.sections)),
+      options_(d.options) {}
+
+void SectionBeamColumn3d::setDomain(Domain&) {
+  for (const Node* n : nodes())
+    if (n->ndf() != 6)
+      throw OpenSeesError(context() + ": node " + std::to_string(n->tag()) + " has " + std::to_string(n->ndf()) +
+                          " dofs, the 3D " + className() + " needs 6 (create its nodes after "
+                          "model('basic', '-ndm', 3, '-ndf', 6))");
+  try {
+    transf_->initialize(*nodes()[0], *nodes()[1]);
+    length_ = transf_->initialLength();
+    integration_->pointsAndWeights(length_, xi_, weights_);
+  } catch (const OpenSeesError& e) {
+    throw OpenSeesError(context() + ": " + e.what());
+  }
+  if (static_cast<int>(xi_.size()) != numSections())
+    throw OpenSeesError(context() + ": the integration rule has " + std::to_string(xi_.size()) +
+                        " points but the element has " + std::to_string(numSections()) + " sections");
+  formMass();
+  initializeState();
+  initialStiff_ = transf_->initialGlobalStiffMatrix(initialBasicStiffness_);
+}
+
+void SectionBeamColumn3d::formMass() {
+  mass_.setZero();
+  const double m = options_.massPerLength;
+  const double L = length_;
+  if (m == 0.0) return;
+  if (!options_.consistentMass) {
+    // Lumped: half the translational mass at each end, no rotary inertia.
+    for (int d : {0, 1, 2, 6, 7, 8}) mass_(d, d) = 0.5 * m * L;
+    return;
+  }
+  // Consistent translational mass: linear axial field, cubic Hermite bending
+  // in both planes (theta_z = v', theta_y = -w'); no torsional inertia (the
+  // section does not say what its polar moment of mass is).
+  Matrix12 local = Matrix12::Zero();
+  local(0, 0) = local(6, 6) = m * L / 3.0;
+  local(0, 6) = local(6, 0) = m * L / 6.0;
+  const double c = m * L / 420.0;
+  const Eigen::Matrix4d hermite = (Eigen::Matrix4d() << 156.0, 22.0 * L, 54.0, -13.0 * L,  //
+                                   22.0 * L, 4.0 * L * L, 13.0 * L, -3.0 * L * L,          //
+                                   54.0, 13.0 * L, 156.0, -22.0 * L,                       //
+                                   -13.0 * L, -3.0 * L * L, -22.0 * L, 4.0 * L * L)
+                                      .finished();
+  const int xy[4] = {1, 5, 7, 11};
+  const int xz[4] = {2, 4, 8, 10};
+  const double xzSign[4] = {1.0, -1.0, 1.0, -1.0};
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      local(xy[a], xy[b]) = c * hermite(a, b);
+      local(xz[a], xz[b]) = c * xzSign[a] * xzSign[b] * hermite(a, b);
+    }
+  Matrix12 rotation = Matrix12::Zero();
+  const Matrix3 axes = transf_->localAxes();
+  for (int k = 0; k < 4; ++k) rotation.block<3, 3>(3 * k, 3 * k) = axes;
+  mass_ = rotation.transpose() * local * rotation;
+}
+
+MatrixView SectionBeamColumn3d::tangentStiff() {
+  const Matrix6& kb = basicStiffness();
+  stiff_ = transf_->globalStiffMatrix(kb, basicForce());
+  return viewOf(stiff_);
+}
+
+MatrixView SectionBeamColumn3d::initialStiff() { return viewOf(initialStiff_); }
+
+VectorView SectionBeamColumn3d::resistingForce() {
+  force_ = transf_->globalResistingForce(basicForce(), p0_);
+  return viewOf(force_);
+}
+
+MatrixView SectionBeamColumn3d::massMatrix() { return viewOf(mass_); }
+
+SectionBeamColumn3d::Vector6 SectionBeamColumn3d::plasticDeformation() {
+  return basicDeformation() - initialBasicStiffness_.ldlt().solve(basicForce());
+}
+
+bool SectionBeamColumn3d::acceptsLoad(ElementLoad::Type type) const {
+  return type == ElementLoad::Type::BeamUniform || type == ElementLoad::Type::BeamPoint;
+}
+
+SectionBeamColumn3d::BeamLoad SectionBeamColumn3d::readLoad(const ElementLoad& load, double factor) const {
+  const std::vector<double>& v = load.values;
+  BeamLoad out;
+  switch (load.type) {
+    case ElementLoad::Type::BeamUniform:
+      if (v.size() < 2 || v.size() > 3)
+        throw OpenSeesError(context() + ": -beamUniform needs Wy, Wz and optionally Wx, got " +
+                            std::to_string(v.size()) + " value(s)");
+      out.uniform = true;
+      out.wy = factor * v[0];
+      out.wz = factor * v[1];
+      out.wx = v.size() > 2 ? factor * v[2] : 0.0;
+      return out;
+    case ElementLoad::Type::BeamPoint:
+      if (v.size() < 3 || v.size() > 4)
+        throw OpenSeesError(context() + ": -beamPoint needs Py, Pz, xL and optionally Px, got " +
+                            std::to_string(v.size()) + " value(s)");
+      if (!(v[2] >= 0.0 && v[2] <= 1.0))
+        throw OpenSeesError(context() + ": -beamPoint xL must lie in [0, 1] (a fraction of the length), got " +
+                            std::to_string(v[2]));
+      out.uniform = false;
+      out.py = factor * v[0];
+      out.pz = factor * v[1];
+      out.a = v[2] * length_;
+      out.px = v.size() > 3 ? factor * v[3] : 0.0;
+      return out;
+    default:
+      throw OpenSeesError(context() + ": does not accept element load " + ElementLoad::typeName(load.type));
+  }
+}
+
+void SectionBeamColumn3d::addLoadReactions(const BeamLoad& load) {
+  const double L = length_;
+  if (load.uniform) {
+    // Axial all at I, transverse half at each end.
+    p0_[0] -= load.wx * L;
+    p0_[1] -= 0.5 * load.wy * L;
+    p0_[7] -= 0.5 * load.wy * L;
+    p0_[2] -= 0.5 * load.wz * L;
+    p0_[8] -= 0.5 * load.wz * L;
+  } else {
+    const double a = load.a, b = L - load.a;
+    p0_[0] -= load.px;
+    p0_[1] -= load.py * b / L;
+    p0_[7] -= load.py * a / L;
+    p0_[2] -= load.pz * b / L;
+    p0_[8] -= load.pz * a / L;
+  }
+}
+
+namespace {
+
+std::vector<std::string> endNames(const char* const (&names)[6]) {
+  std::vector<std::string> out;
+  for (int end = 1; end <= 2; ++end)
+    for (const char* n : names) out.push_back(std::string(n) + "_" + std::to_string(end));
+  return out;
+}
+
+std::vector<std::string> basicNames() { return {"N", "Mz_1", "Mz_2", "My_1", "My_2", "T"}; }
+std::vector<std::string> deformationNames() {
+  return {"eps", "thetaZ_1", "thetaZ_2", "thetaY_1", "thetaY_2", "thetaX"};
+}
+
+}  // namespace
+
+Response SectionBeamColumn3d::setResponse(const std::vector<std::string>& args) {
+  if (args.empty()) return {};
+  const std::string& what = args[0];
+  if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    static const char* const names[6] = {"Px", "Py", "Pz", "Mx", "My", "Mz"};
+    return Response::named(endNames(names), [this] { return Vector(resistingForce()); });
+  }
+  if (what == "localForce" || what == "localForces") {
+    static const char* const names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+    return Response::named(endNames(names),
+                           [this] { return Vector(transf_->localResistingForce(basicForce(), p0_)); });
+  }
+  if (what == "basicForce" || what == "basicForces")
+    return Response::named(basicNames(), [this] { return Vector(basicForce()); });
+  if (what == "basicDeformation" || what == "basicDeformations" || what == "deformation" ||
+      what == "deformations")
+    return Response::named(deformationNames(), [this] { return Vector(basicDeformation()); });
+  if (what == "plasticDeformation" || what == "plasticDeformations")
+    return Response::named(deformationNames(), [this] { return Vector(plasticDeformation()); });
+  if (what == "basicStiffness") {
+    std::vector<std::string> names;
+    for (const auto& row : basicNames())
+      for (const auto& col : deformationNames()) names.push_back("d" + row + "_d" + col);
+    return Response::named(std::move(names), [this] {
+      const Matrix6& kb = basicStiffness();
+      Vector out(36);
+      for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < 6; ++c) out[6 * r + c] = kb(r, c);
+      return out;
+    });
+  }
+  if (what == "integrationPoints")
+    return Response::named(Response::numberedNames("x", numSections()), [this] {
+      Vector out(numSections());
+      for (int i = 0; i < numSections(); ++i) out[i] = xi_[i] * length_;
+      return out;
+    });
+  if (what == "integrationWeights")
+    return Response::named(Response::numberedNames("w", numSections()), [this] {
+      Vector out(numSections());
+      for (int i = 0; i < numSections(); ++i) out[i] = weights_[i] * length_;
+      return out;
+    });
+  if (what == "section" && args.size() >= 3) {
+    int number = 0;
+    try {
+      std::size_t used = 0;
+      number = std::stoi(args[1], &used);
+      if (used != args[1].size()) return {};
+    } catch (const std::exception&) {
+      return {};
+    }
+    if (number < 1 || number > numSections()) return {};
+    return sections_[number - 1]->setResponse(std::vector<std::string>(args.begin() + 2, args.end()));
+  }
+  return {};
+}
+
+void SectionBeamColumn3d::print(std::ostream& os) const {
+  os << className() << ' ' << tag() << ": nodes " << nodeTags()[0] << ' ' << nodeTags()[1] << ", "
+     << integration_->className() << " integration with " << numSections() << " sections (";
+  for (int i = 0; i < numSections(); ++i) os << (i ? " " : "") << sections_[i]->className() << ' ' << sections_[i]->tag();
+  os << "), geomTransf " << transf_->className() << ' ' << transf_->tag();
+  if (options_.massPerLength != 0.0)
+    os << ", mass/length " << options_.massPerLength << (options_.consistentMass ? " (consistent)" : " (lumped)");
+  if (length_ > 0.0) os << ", L " << length_;
+  os << '\n';
+}
+
+void SectionBeamColumn3d::printJSON(std::ostream& os) const {
+  const auto precision = os.precision(12);
+  os << "{\"name\": " << tag() << ", \"type\": \"" << className() << "\", \"nodes\": [" << nodeTags()[0] << ", "
+     << nodeTags()[1] << "], \"sections\": [";
+  for (int i = 0; i < numSections(); ++i) os << (i ? ", " : "") << sections_[i]->tag();
+  os << "], \"integration\": \"" << integration_->className() << "\", \"massperlength\": " << options_.massPerLength
+     << ", \"crdTransformation\": \"" << transf_->tag() << "\"}";
+  os.precision(precision);
+}
+
+SectionBeamColumn3d::Definition SectionBeamColumn3d::parse(CommandArgs& args, Domain& domain, const std::string& type,
+                                                           BeamIntegration::Rule defaultRule, bool forceBased) {
+  Definition d;
+  d.tag = args.nextInt("eleTag");
+  args.setContext("element " + type + " " + std::to_string(d.tag));
+  d.nodeI = args.nextInt("iNode");
+  d.nodeJ = args.nextInt("jNode");
+
+  // The number of numbers up to the first option tells the forms apart.
+  std::size_t numbers = 0;
+  while (args.position() + numbers < args.size() &&
+         !std::holds_alternative<std::string>(args.at(args.position() + numbers)))
+    ++numbers;
+  int transfTag = 0;
+  int integrationTag = 0;
+  int numPoints = 0, sectionTag = 0;
+  std::size_t numPointsAt = 0;
+  const bool olderForm = numbers == 3;
+  if (numbers == 2) {
+    transfTag = args.nextInt("transfTag");
+    integrationTag = args.nextInt("integrationTag");
+  } else if (olderForm) {
+    numPointsAt = args.position();
+    numPoints = args.nextInt("numIntgrPts");
+    sectionTag = args.nextInt("secTag");
+    transfTag = args.nextInt("transfTag");
+  } else {
+    args.fail("expected transfTag, integrationTag (or numIntgrPts, secTag, transfTag) after the nodes, got " +
+              std::to_string(numbers) + " number(s)");
+  }
+
+  BeamIntegration::Rule rule = defaultRule;
+  while (!args.done()) {
+    if (args.nextFlag("-mass")) {
+      const std::size_t at = args.position();
+      d.options.massPerLength = args.nextDouble("massPerLength");
+      if (!(d.options.massPerLength >= 0.0)) args.failAt(at, "massPerLength", "a number >= 0");
+    } else if (args.nextFlag("-cMass")) {
+      if (forceBased) args.fail("'-cMass' is not available: " + type + " has a lumped mass only");
+      d.options.consistentMass = true;
+    } else if (args.nextFlag("-iter")) {
+      if (!forceBased) args.fail("'-iter' is only for force-based elements (forceBeamColumn)");
+      std::size_t at = args.position();
+      d.options.maxIterations = args.nextInt("maxIter");
+      if (d.options.maxIterations < 1) args.failAt(at, "maxIter", "an integer >= 1");
+      at = args.position();
+      d.options.tolerance = args.nextDouble("tol");
+      if (!(d.options.tolerance > 0.0)) args.failAt(at, "tol", "a positive number");
+    } else if (args.nextFlag("-integration")) {
+      if (!olderForm)
+        args.fail("'-integration' belongs to the older form (numIntgrPts, secTag, transfTag); with an "
+                  "integrationTag the rule comes from beamIntegration");
+      const std::string name = args.nextString("integration rule");
+      using Rule = BeamIntegration::Rule;
+      bool known = false;
+      for (Rule r : {Rule::Lobatto, Rule::Legendre, Rule::Radau, Rule::NewtonCotes})
+        if (name == BeamIntegration::ruleName(r)) {
+          rule = r;
+          known = true;
+        }
+      if (!known) args.fail("unknown integration rule '" + name + "' (expected Lobatto, Legendre, Radau or NewtonCotes)");
+    } else if (args.nextIsString()) {
+      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass'" +
+                (forceBased ? std::string(", '-iter'") : std::string(", '-cMass'")) +
+                (olderForm ? ", '-integration'" : "") + ")");
+    } else {
+      args.expectEnd();
+    }
+  }
+
+  if (olderForm) {
+    if (numPoints < BeamIntegration::minPoints(rule) || numPoints > BeamIntegration::maxPoints(rule))
+      args.failAt(numPointsAt, "numIntgrPts",
+                  "a number of points in " + std::to_string(BeamIntegration::minPoints(rule)) + ".." +
+                      std::to_string(BeamIntegration::maxPoints(rule)) + " for " + BeamIntegration::ruleName(rule));
+    domain.sections.get(sectionTag, args.context());
+    d.integration = std::make_shared<BeamIntegration>(0, rule, std::vector<int>(numPoints, sectionTag));
+  } else {
+    d.integration = domain.beamIntegrations.shared(integrationTag, args.context());
+  }
+  for (int s : d.integration->sectionTags()) d.sections.push_back(domain.sections.get(s, args.context()).clone());
+  d.transf = domain.geomTransfs.get(transfTag, args.context()).clone();
+  return d;
+}
+
+}  // namespace beamsolid

@@ -1,0 +1,257 @@
+#include "sections/BeamIntegration.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "core/CommandArgs.h"
+#include "core/Domain.h"
+#include "core/OpenSeesError.h"
+#include "core/Registry.h"
+#include "sections/SectionForceDeformation.h"
+
+namespace beamsolid {
+
+namespace {
+
+// Legendre polynomials P_n(x) and P_{n-1}(x) by the three-term recurrence.
+void legendre(int n, double x, double& pn, double& pnMinus1) {
+  double p0 = 1.0, p1 = x;
+  if (n == 0) {
+    pn = 1.0;
+    pnMinus1 = 0.0;
+    return;
+  }
+  for (int k = 2; k <= n; ++k) {
+    const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+    p0 = p1;
+    p1 = p2;
+  }
+  pn = p1;
+  pnMinus1 = p0;
+}
+
+// Zeros of the degree-m Jacobi polynomial for the weight (1-x)^alpha (1+x)^beta
+// on [-1, 1]: eigenvalues of its Jacobi matrix (Golub and Welsch, 1969).
+std::vector<double> jacobiZeros(int m, double alpha, double beta) {
+  if (m <= 0) return {};
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, m);
+  const double ab = alpha + beta;
+  for (int n = 0; n < m; ++n) {
+    const double s = 2.0 * n + ab;
+    J(n, n) = (n == 0 && ab == 0.0) ? (beta - alpha) / (ab + 2.0) : (beta * beta - alpha * alpha) / (s * (s + 2.0));
+    if (n >= 1) {
+      const double b = std::sqrt(4.0 * n * (n + alpha) * (n + beta) * (n + ab) / (s * s * (s + 1.0) * (s - 1.0)));
+      J(n, n - 1) = J(n - 1, n) = b;
+    }
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(J, Eigen::EigenvaluesOnly);
+  std::vector<double> x(eigen.eigenvalues().data(), eigen.eigenvalues().data() + m);
+  std::sort(x.begin(), x.end());
+  return x;
+}
+
+// From [-1, 1] (weights summing to 2) to [0, 1] (summing to 1).
+void toUnitInterval(std::vector<double>& xi, std::vector<double>& weights) {
+  for (double& x : xi) x = 0.5 * (x + 1.0);
+  for (double& w : weights) w *= 0.5;
+}
+
+}  // namespace
+
+void BeamIntegration::gaussLegendre(int n, std::vector<double>& xi, std::vector<double>& weights) {
+  xi = jacobiZeros(n, 0.0, 0.0);
+  weights.resize(n);
+  for (int i = 0; i < n; ++i) {
+    double pn, pm;
+    legendre(n, xi[i], pn, pm);
+    const double x = xi[i];
+    const double derivative = n * (x * pn - pm) / (x * x - 1.0);
+    weights[i] = 2.0 / ((1.0 - x * x) * derivative * derivative);
+  }
+  toUnitInterval(xi, weights);
+}
+
+void BeamIntegration::gaussLobatto(int n, std::vector<double>& xi, std::vector<double>& weights) {
+  // Interior points: zeros of P'_{n-1}, i.e. of the Jacobi(1, 1) polynomial.
+  xi = jacobiZeros(n - 2, 1.0, 1.0);
+  xi.insert(xi.begin(), -1.0);
+  xi.push_back(1.0);
+  weights.resize(n);
+  for (int i = 0; i < n; ++i) {
+    double pn, pm;
+    legendre(n - 1, xi[i], pn, pm);
+    weights[i] = 2.0 / (n * (n - 1) * pn * pn);
+  }
+  toUnitInterval(xi, weights);
+}
+
+void BeamIntegration::gaussRadau(int n, std::vector<double>& xi, std::vector<double>& weights) {
+  // The fixed point at -1 (end I); the others are zeros of the Jacobi(0, 1) polynomial.
+  xi = jacobiZeros(n - 1, 0.0, 1.0);
+  xi.insert(xi.begin(), -1.0);
+  weights.resize(n);
+  weights[0] = 2.0 / (double(n) * n);
+  for (int i = 1; i < n; ++i) {
+    double pn, pm;
+    legendre(n - 1, xi[i], pn, pm);
+    weights[i] = (1.0 - xi[i]) / (double(n) * n * pn * pn);
+  }
+  toUnitInterval(xi, weights);
+}
+
+void BeamIntegration::newtonCotes(int n, std::vector<double>& xi, std::vector<double>& weights) {
+  xi.resize(n);
+  for (int i = 0; i < n; ++i) xi[i] = double(i) / (n - 1);
+  // Weights integrate 1, x, ..., x^(n-1) exactly on [0, 1].
+  Eigen::MatrixXd V(n, n);
+  Eigen::VectorXd moments(n);
+  for (int k = 0; k < n; ++k) {
+    for (int i = 0; i < n; ++i) V(k, i) = std::pow(xi[i], k);
+    moments[k] = 1.0 / (k + 1);
+  }
+  const Eigen::VectorXd w = V.colPivHouseholderQr().solve(moments);
+  weights.assign(w.data(), w.data() + n);
+}
+
+const char* BeamIntegration::ruleName(Rule rule) {
+  switch (rule) {
+    case Rule::Lobatto: return "Lobatto";
+    case Rule::Legendre: return "Legendre";
+    case Rule::Radau: return "Radau";
+    case Rule::NewtonCotes: return "NewtonCotes";
+    case Rule::HingeRadau: return "HingeRadau";
+    case Rule::HingeRadauTwo: return "HingeRadauTwo";
+  }
+  return "?";
+}
+
+int BeamIntegration::minPoints(Rule rule) {
+  switch (rule) {
+    case Rule::Lobatto:
+    case Rule::NewtonCotes: return 2;
+    case Rule::HingeRadau:
+    case Rule::HingeRadauTwo: return 6;
+    default: return 1;
+  }
+}
+
+int BeamIntegration::maxPoints(Rule rule) {
+  switch (rule) {
+    // Closed Newton-Cotes weights turn negative and grow beyond this.
+    case Rule::NewtonCotes: return 12;
+    case Rule::HingeRadau:
+    case Rule::HingeRadauTwo: return 6;
+    default: return 30;
+  }
+}
+
+BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags)
+    : tag_(tag), rule_(rule), sectionTags_(std::move(sectionTags)) {
+  const int n = numPoints();
+  if (rule == Rule::HingeRadau || rule == Rule::HingeRadauTwo)
+    throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
+                        ": a hinge rule needs secI, lpI, secJ, lpJ, secE");
+  if (n < minPoints(rule) || n > maxPoints(rule))
+    throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
+                        ": the number of points must lie in " + std::to_string(minPoints(rule)) + ".." +
+                        std::to_string(maxPoints(rule)) + ", got " + std::to_string(n));
+}
+
+BeamIntegration::BeamIntegration(int tag, Rule rule, const Hinges& hinges) : tag_(tag), rule_(rule), hinges_(hinges) {
+  if (rule != Rule::HingeRadau && rule != Rule::HingeRadauTwo)
+    throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
+                        ": not a hinge rule");
+  sectionTags_ = {hinges.sectionI, hinges.sectionI, hinges.sectionInterior,
+                  hinges.sectionInterior, hinges.sectionJ, hinges.sectionJ};
+}
+
+void BeamIntegration::pointsAndWeights(double length, std::vector<double>& xi, std::vector<double>& weights) const {
+  const int n = numPoints();
+  switch (rule_) {
+    case Rule::Lobatto: gaussLobatto(n, xi, weights); return;
+    case Rule::Legendre: gaussLegendre(n, xi, weights); return;
+    case Rule::Radau: gaussRadau(n, xi, weights); return;
+    case Rule::NewtonCotes: newtonCotes(n, xi, weights); return;
+    case Rule::HingeRadau:
+    case Rule::HingeRadauTwo: break;
+  }
+  // Hinge regions of length span*lp at each end, two-point Radau in each
+  // (end point weight 1/4, interior point at 2/3 with weight 3/4 of the span).
+  const double span = rule_ == Rule::HingeRadau ? 4.0 : 1.0;
+  const double a = span * hinges_.lengthI / length;
+  const double b = span * hinges_.lengthJ / length;
+  if (a + b > 1.0 + 1e-12)
+    throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule_) + " " + std::to_string(tag_) +
+                        ": the hinge regions (" + std::to_string(span) + " lpI + " + std::to_string(span) +
+                        " lpJ = " + std::to_string((a + b) * length) + ") are longer than the element (" +
+                        std::to_string(length) + ")");
+  const double interior = std::max(0.0, 1.0 - a - b);
+  const double gauss = 0.5 / std::sqrt(3.0);
+  xi = {0.0, 2.0 / 3.0 * a, a + (0.5 - gauss) * interior, a + (0.5 + gauss) * interior, 1.0 - 2.0 / 3.0 * b, 1.0};
+  weights = {0.25 * a, 0.75 * a, 0.5 * interior, 0.5 * interior, 0.75 * b, 0.25 * b};
+}
+
+namespace {
+
+std::unique_ptr<BeamIntegration> buildRule(CommandArgs& args, Domain& domain, BeamIntegration::Rule rule) {
+  const char* name = BeamIntegration::ruleName(rule);
+  const int tag = args.nextInt("tag");
+  args.setContext(std::string("beamIntegration ") + name + " " + std::to_string(tag));
+  if (rule == BeamIntegration::Rule::HingeRadau || rule == BeamIntegration::Rule::HingeRadauTwo) {
+    BeamIntegration::Hinges h;
+    h.sectionI = args.nextInt("secI");
+    std::size_t at = args.position();
+    h.lengthI = args.nextDouble("lpI");
+    if (!(h.lengthI >= 0.0)) args.failAt(at, "lpI", "a hinge length >= 0");
+    h.sectionJ = args.nextInt("secJ");
+    at = args.position();
+    h.lengthJ = args.nextDouble("lpJ");
+    if (!(h.lengthJ >= 0.0)) args.failAt(at, "lpJ", "a hinge length >= 0");
+    h.sectionInterior = args.nextInt("secE");
+    args.expectEnd();
+    for (int s : {h.sectionI, h.sectionJ, h.sectionInterior}) domain.sections.get(s, args.context());
+    return std::make_unique<BeamIntegration>(tag, rule, h);
+  }
+  const std::size_t numbers = args.remaining();
+  std::vector<int> sectionTags;
+  if (numbers == 2) {
+    const int secTag = args.nextInt("secTag");
+    const std::size_t at = args.position();
+    const int n = args.nextInt("N");
+    if (n < BeamIntegration::minPoints(rule) || n > BeamIntegration::maxPoints(rule))
+      args.failAt(at, "N", "a number of points in " + std::to_string(BeamIntegration::minPoints(rule)) + ".." +
+                              std::to_string(BeamIntegration::maxPoints(rule)));
+    sectionTags.assign(n, secTag);
+  } else if (numbers > 2) {
+    const std::size_t at = args.position();
+    const int n = args.nextInt("N");
+    if (n < BeamIntegration::minPoints(rule) || n > BeamIntegration::maxPoints(rule))
+      args.failAt(at, "N", "a number of points in " + std::to_string(BeamIntegration::minPoints(rule)) + ".." +
+                              std::to_string(BeamIntegration::maxPoints(rule)));
+    if (static_cast<int>(args.remaining()) != n)
+      args.fail("the non-prismatic form (N, *secTags) needs " + std::to_string(n) + " section tags, got " +
+                std::to_string(args.remaining()));
+    for (int i = 0; i < n; ++i) sectionTags.push_back(args.nextInt("secTag"));
+  } else {
+    args.fail("expected secTag, N (or N, *secTags) after the tag");
+  }
+  args.expectEnd();
+  for (int s : sectionTags) domain.sections.get(s, args.context());
+  return std::make_unique<BeamIntegration>(tag, rule, std::move(sectionTags));
+}
+
+void registerBeamIntegrations(Registry& r) {
+  using Rule = BeamIntegration::Rule;
+  for (Rule rule : {Rule::Lobatto, Rule::Legendre, Rule::Radau, Rule::NewtonCotes, Rule::HingeRadau,
+                    Rule::HingeRadauTwo})
+    r.beamIntegrations.add(BeamIntegration::ruleName(rule),
+                           [rule](CommandArgs& args, Domain& domain) { return buildRule(args, domain, rule); });
+}
+
+}  // namespace
+
+BEAMSOLID_REGISTER(registerBeamIntegrations);
+
+}  // namespace beamsolid

@@ -1,0 +1,65 @@
+#include "sections/ElasticSection3d.h"
+
+#include "core/CommandArgs.h"
+#include "core/Domain.h"
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+ElasticSection3d::ElasticSection3d(int tag, const Properties& p) : SectionForceDeformation(tag), properties_(p) {
+  stiffness_.diagonal() << p.E * p.A, p.E * p.Iz, p.E * p.Iy, p.G * p.J;
+}
+
+std::unique_ptr<SectionForceDeformation> ElasticSection3d::clone() const {
+  return std::make_unique<ElasticSection3d>(*this);
+}
+
+void ElasticSection3d::setTrialDeformation(const Vector4& e) {
+  deformation_ = e;
+  force_ = stiffness_.diagonal().cwiseProduct(e);
+}
+
+void ElasticSection3d::revertToStart() {
+  committedDeformation_.setZero();
+  setTrialDeformation(committedDeformation_);
+}
+
+void ElasticSection3d::print(std::ostream& os) const {
+  const Properties& p = properties_;
+  os << "Section " << tag() << " type Elastic E " << p.E << " A " << p.A << " Iz " << p.Iz << " Iy " << p.Iy
+     << " G " << p.G << " J " << p.J << '\n';
+}
+
+namespace {
+
+std::unique_ptr<SectionForceDeformation> buildElasticSection3d(CommandArgs& args, Domain&) {
+  const int tag = args.nextInt("secTag");
+  args.setContext("section Elastic " + std::to_string(tag));
+  const std::size_t numbers = args.remaining();
+  if (numbers == 3)
+    args.fail("the 2D form (E, A, Iz) is not supported: BeamSolid models are 3D; give E, A, Iz, Iy, G, J");
+  if (numbers == 8)
+    args.fail("shear-deformable sections (alphaY, alphaZ) are not supported; give E, A, Iz, Iy, G, J");
+  if (numbers != 6) args.fail("expected E, A, Iz, Iy, G, J (6 numbers) after the tag, got " + std::to_string(numbers));
+  ElasticSection3d::Properties p;
+  struct Positive {
+    double* value;
+    const char* name;
+  };
+  for (const Positive& item : {Positive{&p.E, "E"}, Positive{&p.A, "A"}, Positive{&p.Iz, "Iz"},
+                               Positive{&p.Iy, "Iy"}, Positive{&p.G, "G"}, Positive{&p.J, "J"}}) {
+    const std::size_t at = args.position();
+    *item.value = args.nextDouble(item.name);
+    if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+  }
+  args.expectEnd();
+  return std::make_unique<ElasticSection3d>(tag, p);
+}
+
+void registerElasticSection3d(Registry& r) { r.sections.add("Elastic", &buildElasticSection3d); }
+
+}  // namespace
+
+BEAMSOLID_REGISTER(registerElasticSection3d);
+
+}  // namespace beamsolid

@@ -1,0 +1,41 @@
+#include "sections/SectionForceDeformation.h"
+
+namespace beamsolid {
+
+std::string SectionForceDeformation::context() const { return "section " + className() + " " + std::to_string(tag_); }
+
+Response SectionForceDeformation::setResponse(const std::vector<std::string>& args) {
+  if (args.empty()) return {};
+  const std::string& what = args[0];
+  if (what == "force" || what == "forces")
+    return Response::named({"P", "Mz", "My", "T"}, [this] { return Vector(force()); });
+  if (what == "deformation" || what == "deformations")
+    return Response::named({"eps", "kappaZ", "kappaY", "theta"}, [this] { return Vector(deformation()); });
+  if (what == "forceAndDeformation" || what == "forceDeformation")
+    return Response::named({"eps", "kappaZ", "kappaY", "theta", "P", "Mz", "My", "T"}, [this] {
+      Vector out(8);
+      out << deformation(), force();
+      return out;
+    });
+  if (what == "stiffness" || what == "tangent") {
+    static const char* const names[4] = {"P", "Mz", "My", "T"};
+    static const char* const deformations[4] = {"eps", "kappaZ", "kappaY", "theta"};
+    std::vector<std::string> componentNames;
+    for (const char* row : names)
+      for (const char* col : deformations) componentNames.push_back(std::string("d") + row + "_d" + col);
+    return Response::named(std::move(componentNames), [this] {
+      Vector out(16);
+      const Matrix4& k = tangent();
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) out[4 * r + c] = k(r, c);
+      return out;
+    });
+  }
+  return {};
+}
+
+void SectionForceDeformation::print(std::ostream& os) const {
+  os << "Section " << tag_ << " type " << className() << '\n';
+}
+
+}  // namespace beamsolid

@@ -1,0 +1,207 @@
+"""Fiber sections and distributed-plasticity beam-columns through the Python commands.
+
+Checks against hand calculations and closed forms:
+* a circular reinforced-concrete pile section (elastic concrete, ElasticPP
+  bars): its bending stiffness and first-yield moment against the transformed
+  section, within the patch discretization error (0.1 %);
+* an elastic-perfectly plastic cantilever pushed past yield with
+  DisplacementControl: the load plateau approaches Mp / L (within 1 %) and
+  never exceeds it;
+* one forceBeamColumn (older 'nonlinearBeamColumn' form too) reproduces the
+  elastic cantilever to round-off (1e-12).
+"""
+import math
+
+import numpy as np
+import pytest
+
+import beamsolid
+
+
+def static_setup(ops, integrator, tol=1e-10, test="NormUnbalance"):
+    ops.constraints("Plain")
+    ops.numberer("Plain")
+    ops.system("UmfPack")
+    ops.test(test, tol, 50)
+    ops.algorithm("Newton")
+    ops.integrator(*integrator)
+    ops.analysis("Static")
+
+
+# --- circular RC pile section ------------------------------------------------------
+
+D, COVER = 0.6, 0.075            # m; cover to bar centres
+R_BARS = D / 2 - COVER
+N_BARS, A_BAR = 12, math.pi * 0.025**2 / 4
+EC, ES, FY = 3.0e7, 2.0e8, 4.2e5  # kPa
+CONCRETE, STEEL = 1, 2
+
+
+def pile_cantilever(ops, L=3.0, n_circ=64, n_rad=40):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, L, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.uniaxialMaterial("Elastic", CONCRETE, EC)
+    ops.uniaxialMaterial("ElasticPP", STEEL, ES, FY / ES)
+    ops.section("Fiber", 1, "-GJ", 1.0e6)
+    # The bars overlap the concrete (no holes), as the hand calculation assumes.
+    ops.patch("circ", CONCRETE, n_circ, n_rad, 0.0, 0.0, 0.0, D / 2, 0.0, 360.0)
+    ops.layer("circ", STEEL, N_BARS, A_BAR, 0.0, 0.0, R_BARS)
+    ops.beamIntegration("Lobatto", 1, 1, 3)
+    ops.element("forceBeamColumn", 1, 1, 2, 1, 1)
+
+
+def transformed_section():
+    """EI of the uncracked transformed section and its first-yield moment."""
+    EI = EC * math.pi * (D / 2) ** 4 / 4 + ES * A_BAR * R_BARS**2 * N_BARS / 2
+    kappa_y = (FY / ES) / R_BARS  # the bars at y = +-R_BARS are the farthest
+    return EI, EI * kappa_y
+
+
+def apply_tip_moment(ops, M):
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 0.0, 0.0, 0.0, 0.0, 0.0, M)
+    static_setup(ops, ("LoadControl", 1.0))
+    assert ops.analyze(1) == 0
+
+
+def test_rc_pile_section_stiffness_and_first_yield_moment(ops):
+    EI, My = transformed_section()
+    pile_cantilever(ops)
+    k = ops.eleResponse(1, "section", 1, "stiffness")
+    assert abs(k[5] - EI) / EI < 1e-3                     # dMz/dkappaZ
+    assert abs(k[0] - (EC * math.pi * (D / 2) ** 2 + ES * N_BARS * A_BAR)) < 1e-9 * k[0]
+    apply_tip_moment(ops, 0.999 * My)
+    # Uniform moment: every section has kappa = M / EI; the tension bar at y = -R.
+    for i in (1, 2, 3):
+        stress, strain = ops.eleResponse(1, "section", i, "fiber", -R_BARS, 0.0, STEEL, "stressStrain")
+        assert stress == pytest.approx(0.999 * FY, rel=1e-3)
+        first_yield = 0.999 * My * FY / stress
+        assert abs(first_yield - My) / My < 1e-3
+        compression = ops.eleResponse(1, "section", i, "fiber", R_BARS, 0.0, STEEL, "stress")[0]
+        assert compression == pytest.approx(-stress, rel=1e-9)
+    assert max(ops.eleResponse(1, "plasticDeformation"), key=abs) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_rc_pile_bars_yield_just_above_the_first_yield_moment(ops):
+    EI, My = transformed_section()
+    pile_cantilever(ops)
+    apply_tip_moment(ops, 1.01 * My)
+    stress, strain = ops.eleResponse(1, "section", 2, "fiber", -R_BARS, 0.0, STEEL, "stressStrain")
+    assert stress == pytest.approx(FY, rel=1e-12)
+    assert strain > FY / ES
+    # The bars at +-30 degrees stay elastic: cos(30) * 1.01 < 1.
+    y30 = -R_BARS * math.cos(math.radians(30.0))
+    z30 = R_BARS * math.sin(math.radians(30.0))
+    assert abs(ops.eleResponse(1, "section", 2, "fiber", y30, z30, STEEL, "stress")[0]) < FY
+
+
+# --- elastic-perfectly plastic cantilever pushover ----------------------------------
+
+E, FY_S, B, H, L = 2.0e5, 300.0, 0.1, 0.2, 2.0
+MP, MY = FY_S * B * H**2 / 4, FY_S * B * H**2 / 6
+I = B * H**3 / 12
+
+
+@pytest.mark.parametrize("form", ["new", "older"])
+def test_pushover_plateau_approaches_plastic_capacity(ops, form):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, L, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.uniaxialMaterial("ElasticPP", 1, E, FY_S / E)
+    ops.section("Fiber", 1, "-GJ", 1.0e4)
+    ops.patch("rect", 1, 100, 2, -H / 2, -B / 2, H / 2, B / 2)
+    if form == "new":
+        ops.beamIntegration("Lobatto", 1, 1, 5)
+        ops.element("forceBeamColumn", 1, 1, 2, 1, 1, "-iter", 20, 1e-14)
+    else:
+        ops.element("nonlinearBeamColumn", 1, 1, 2, 5, 1, 1, "-iter", 20, 1e-14)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
+    delta_y = MY * L**2 / (3 * E * I)
+    static_setup(ops, ("DisplacementControl", 2, 2, 0.25 * delta_y), test="NormDispIncr")
+    loads = []
+    for _ in range(80):
+        assert ops.analyze(1) == 0
+        loads.append(ops.getLoadFactor(1))
+    loads = np.array(loads)
+    assert np.all(np.diff(loads) >= -1e-12 * MP)  # a plateau once every fiber at the base yields
+    assert np.all(loads * L <= MP * (1 + 1e-9))
+    fiber_I = I * (1 - 1 / 100**2)  # 100 midpoint layers
+    assert loads[0] == pytest.approx(3 * E * fiber_I / L**3 * 0.25 * delta_y, rel=1e-9)
+    assert loads[-1] * L > 0.99 * MP
+    # The base section is plastic: its extreme fibers carry the yield stress.
+    assert ops.eleResponse(1, "section", 1, "fiber", -H / 2, 0.0, "stress")[0] == pytest.approx(FY_S, rel=1e-12)
+    assert ops.eleResponse(1, "section", 1, "fiber", H / 2, 0.0, "stress")[0] == pytest.approx(-FY_S, rel=1e-12)
+    assert max(map(abs, ops.eleResponse(1, "plasticDeformation"))) > 0.0
+    base_moment = ops.eleResponse(1, "section", 1, "force")[1]
+    assert base_moment == pytest.approx(loads[-1] * L, rel=1e-6)
+
+
+# --- elastic cantilever, section commands, errors ------------------------------------
+
+def test_force_beam_column_reproduces_elastic_cantilever(ops):
+    E_, A_, Iz, Iy, G_, J_ = 2.0e5, 0.05, 5.0e-4, 2.0e-4, 8.0e4, 3.0e-4
+    Lc, P, M = 3.0, -20.0, 9.0
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, Lc, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.section("Elastic", 1, E_, A_, Iz, Iy, G_, J_)
+    ops.element("nonlinearBeamColumn", 1, 1, 2, 4, 1, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 0.0, P, 0.0, 0.0, 0.0, M)
+    static_setup(ops, ("LoadControl", 1.0), tol=1e-12)
+    assert ops.analyze(1) == 0
+    v = P * Lc**3 / (3 * E_ * Iz) + M * Lc**2 / (2 * E_ * Iz)
+    rz = P * Lc**2 / (2 * E_ * Iz) + M * Lc / (E_ * Iz)
+    assert ops.nodeDisp(2, 2) == pytest.approx(v, rel=1e-12)
+    assert ops.nodeDisp(2, 6) == pytest.approx(rz, rel=1e-12)
+    basic = ops.eleResponse(1, "basicForce")
+    assert basic[1] == pytest.approx(-(P * Lc + M), rel=1e-12)  # Mz at I
+    assert basic[2] == pytest.approx(M, rel=1e-12)  # Mz at J
+    x = ops.eleResponse(1, "integrationPoints")
+    assert x[0] == 0.0 and x[-1] == pytest.approx(Lc)
+
+
+def test_circular_patch_area_is_exact_and_layers_add_bars(ops):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 1.0, 0.0, 0.0)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.uniaxialMaterial("Elastic", 1, 1.0)
+    ops.section("Fiber", 1, "-GJ", 1.0)
+    ops.patch("circ", 1, 7, 3, 0.0, 0.0, 0.1, 0.5)          # annulus, default full circle
+    ops.patch("quad", 1, 2, 3, -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0)
+    ops.layer("straight", 1, 4, 0.01, 0.0, -1.0, 0.0, 1.0)
+    ops.fiber(0.3, 0.3, 0.02, 1)
+    ops.beamIntegration("Legendre", 1, 1, 2)
+    ops.element("dispBeamColumn", 1, 1, 2, 1, 1)
+    k = ops.eleResponse(1, "section", 1, "stiffness")
+    area = math.pi * (0.25 - 0.01) + 4.0 + 4 * 0.01 + 0.02
+    assert k[0] == pytest.approx(area, rel=1e-13)
+    assert ops.eleResponse(1, "section", 1, "numFibers")[0] == 7 * 3 + 6 + 4 + 1
+
+
+def test_section_commands_report_errors(ops):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.uniaxialMaterial("Elastic", 1, 1.0)
+    with pytest.raises(beamsolid.OpenSeesError, match="no section to add fibers to"):
+        ops.patch("rect", 1, 2, 2, -1.0, -1.0, 1.0, 1.0)
+    with pytest.raises(beamsolid.OpenSeesError, match="-GJ"):
+        ops.section("Fiber", 1)
+    ops.section("Fiber", 1, "-GJ", 1.0)
+    with pytest.raises(beamsolid.OpenSeesError, match="uniaxialMaterial 5 does not exist"):
+        ops.layer("circ", 5, 8, 0.1, 0.0, 0.0, 0.5)
+    with pytest.raises(beamsolid.OpenSeesError, match="number of points"):
+        ops.beamIntegration("Lobatto", 1, 1, 1)
+    with pytest.raises(beamsolid.OpenSeesError, match="section 4 does not exist"):
+        ops.beamIntegration("Legendre", 1, 4, 3)
