@@ -20,7 +20,8 @@ namespace beamsolid {
 //   q += dq,  e += f (r + b dq),
 // which leaves compatibility exact after every iteration; it stops when the
 // work of the residuals |dq.dv| + sum w L r.f r is below tol times the larger
-// of the first iteration's and q.v (default tol 1e-12, maxIter 10). If that
+// of the first iteration's and q.v (default tol 1e-12, maxIter 10), after at
+// least one iteration whenever v or the loads changed. If that
 // fails the element restarts from its committed state and approaches v in
 // 2, 4, ..., 32 substeps. The basic stiffness is F^-1 of the converged state.
 // Default rule of the older form: Lobatto.

@@ -63,7 +63,6 @@ class SectionBeamColumn3d : public Element {
   // 'plasticDeformation', 'basicStiffness', 'integrationPoints' and
   // 'integrationWeights' (in length units, as x and w*L), 'section', i (1-based), *args.
   Response setResponse(const std::vector<std::string>& args) override;
-  void updateMaterialStage(int, int) override {}
 
   void print(std::ostream& os) const override;
   void printJSON(std::ostream& os) const override;
