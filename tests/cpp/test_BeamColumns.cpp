@@ -435,6 +435,36 @@ TEST(BeamColumns, TangentMatchesFiniteDifferencesInAPlasticState) {
   }
 }
 
+TEST(BeamColumns, ForceBeamColumnSubstepsWhenIterationsRunOut) {
+  // A jump from rest to about 12 yield displacements in one update: the
+  // element's Newton iterations cycle (sections overshoot into the fully
+  // plastic range), so it falls back to substeps from the committed state.
+  // It must end where an element walked there in 100 small updates ends
+  // (the materials start every trial from their committed state).
+  Script s;
+  PlasticCantilever::build(s, "forceBeamColumn", 1, "Lobatto", 5, 40);
+  s("node", 3, 0.0, 1.0, 0.0);
+  s("node", 4, PlasticCantilever::L, 1.0, 0.0);
+  s("element", "forceBeamColumn", 2, 3, 4, 1, 1, "-iter", 10, 1e-16);
+  auto& jump = dynamic_cast<ForceBeamColumn3d&>(s.interp.domain().element(2, "test"));
+  auto& walk = dynamic_cast<ForceBeamColumn3d&>(s.interp.domain().element(1, "test"));
+  Vector u = Vector::Zero(6);
+  u[1] = 0.08;
+  s.interp.domain().node(4, "test").setTrialDisp(u);
+  jump.update();
+  EXPECT_TRUE(jump.converged());
+  std::cout << "[ measured ] one jump to 12 yield displacements: " << jump.lastIterations()
+            << " element iterations (direct attempt and substeps)\n";
+  EXPECT_GT(jump.lastIterations(), 10);
+  Node& tip = s.interp.domain().node(2, "test");
+  for (int k = 1; k <= 100; ++k) {
+    tip.setTrialDisp((k / 100.0) * u);
+    walk.update();
+    ASSERT_TRUE(walk.converged()) << k;
+  }
+  EXPECT_LT((jump.basicForce() - walk.basicForce()).norm(), 1e-7 * walk.basicForce().norm());
+}
+
 TEST(BeamColumns, RevertRestoresTheCommittedState) {
   for (const char* type : {"forceBeamColumn", "dispBeamColumn"}) {
     Script s;
