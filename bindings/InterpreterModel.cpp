@@ -20,6 +20,7 @@ Result Interpreter::wipe(CommandArgs& a) {
   ndm_ = ndf_ = 0;
   currentPatternTag_ = -1;
   eigenvalues_.clear();
+  testMaterial_.reset();
   return {};
 }
 
