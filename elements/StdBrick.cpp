@@ -19,9 +19,12 @@ namespace {
 constexpr double kNodeXi[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                   {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
 
-// 2x2x2 Gauss rule: the points sit at +-1/sqrt(3) in the same pattern as the
-// nodes (Gauss point k is the one nearest node k), every weight is 1.
-double gaussCoordinate(int point, int direction) { return kNodeXi[point][direction] / std::sqrt(3.0); }
+// 2x2x2 Gauss rule at +-1/sqrt(3), every weight 1. The points are numbered
+// as OpenSees numbers them (what 'stresses', 'strains' and 'material' k
+// report): xi varies slowest, zeta fastest, (-,-,-), (-,-,+), (-,+,-), ...
+constexpr double kGaussXi[8][3] = {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {-1, 1, 1},
+                                   {1, -1, -1},  {1, -1, 1},  {1, 1, -1},  {1, 1, 1}};
+double gaussCoordinate(int point, int direction) { return kGaussXi[point][direction] / std::sqrt(3.0); }
 
 // dN_a/d(xi, eta, zeta) of the trilinear shape functions at a natural point.
 Eigen::Matrix<double, 8, 3> naturalGradients(double xi, double eta, double zeta) {

@@ -51,7 +51,8 @@ class StdBrick : public Element {
   void addLoad(const ElementLoad& load, double factor) override;
   bool acceptsLoad(ElementLoad::Type type) const override { return type == ElementLoad::Type::SelfWeight; }
 
-  // 'stresses'/'stress', 'strains'/'strain' (8 Gauss points x 6),
+  // 'stresses'/'stress', 'strains'/'strain' (8 Gauss points x 6, OpenSees' point
+  // order: xi slowest, zeta fastest),
   // 'force'/'forces'/'globalForce' (24), 'material' i ... (i = 1..8).
   Response setResponse(const std::vector<std::string>& args) override;
   // Forwarded to every Gauss point material; true when any accepted it.

@@ -397,6 +397,35 @@ TEST(StdBrick, ResponsesAndMaterialForwarding) {
   EXPECT_FALSE(e.setResponse({"nonsense"}));
 }
 
+TEST(StdBrick, GaussPointsAreNumberedAsInOpenSees) {
+  // OpenSees numbers the 2x2x2 points with xi slowest and zeta fastest:
+  // (-,-,-), (-,-,+), (-,+,-), (-,+,+), (+,-,-), ... (checked against
+  // OpenSeesPy 3.7.1, tests/python/oracle_scripts). On the box
+  // [0,2]x[0,3]x[0,5] point g sits at the centre plus (sx, sy, sz) times the
+  // half sides over sqrt(3), to round-off.
+  Domain d;
+  addNDMaterial(d, "ElasticIsotropic", 1, 1000.0, 0.3, 2.0);
+  BrickBlock block{{0.0, 2.0}, {0.0, 3.0}, {0.0, 5.0}};
+  block.build(d, 1);
+  const StdBrick& e = brick(d, 1);
+  const Vector3 centre(1.0, 1.5, 2.5), half(1.0, 1.5, 2.5);
+  for (int g = 0; g < StdBrick::kGaussPoints; ++g) {
+    const Vector3 sign(g & 4 ? 1.0 : -1.0, g & 2 ? 1.0 : -1.0, g & 1 ? 1.0 : -1.0);
+    const Vector3 expected = centre + sign.cwiseProduct(half) / std::sqrt(3.0);
+    EXPECT_LE((e.gaussPointCoordinates(g) - expected).norm(), 1e-14) << "Gauss point " << g + 1;
+  }
+  // The 'material' index and the 'stresses' blocks follow the same order.
+  for (const auto& [tag, n] : d.nodes()) n->setTrialDisp(Vector3(1e-3 * n->crd()(2) * n->crd()(0), 0.0, 0.0));
+  d.findElement(1)->update();
+  Element& element = *d.findElement(1);
+  const Vector stresses = element.setResponse({"stresses"}).value();
+  for (int g = 0; g < StdBrick::kGaussPoints; ++g) {
+    const Vector s = element.setResponse({"material", std::to_string(g + 1), "stress"}).value();
+    EXPECT_EQ(s, Vector(stresses.segment<6>(6 * g)));
+    EXPECT_EQ(s, Vector(e.material(g).stress()));
+  }
+}
+
 TEST(StdBrick, CommitAndRevertFollowTheMaterials) {
   Domain d;
   addDistortedBrick(d);
