@@ -172,8 +172,9 @@ VectorView StdBrick::resistingForce() {
     stress = materials_[g]->stress();
     force_.noalias() += weightedDetJ_[g] * (B.transpose() * stress);
   }
-  // Body forces per unit volume plus self-weight accelerations times density.
-  const Vector3 perVolume = bodyForce_ + materials_[0]->density() * selfWeight_;
+  // Body force per unit volume: the element's own, or the one of the active
+  // -selfWeight loads (see StdBrick.h).
+  const Vector3& perVolume = bodyForceFromLoads_ ? loadedBodyForce_ : bodyForce_;
   for (int a = 0; a < kNodes; ++a) force_.segment<3>(3 * a) -= nodalVolume_(a) * perVolume;
   return viewOf(force_);
 }
@@ -205,9 +206,15 @@ void StdBrick::addLoad(const ElementLoad& load, double factor) {
     return;
   }
   if (load.values.size() != 3)
-    throw OpenSeesError(context() + ": -selfWeight expects 3 values (bx, by, bz), got " +
+    throw OpenSeesError(context() + ": -selfWeight expects 3 values (factors on b1, b2, b3), got " +
                         std::to_string(load.values.size()));
-  for (int i = 0; i < 3; ++i) selfWeight_(i) += factor * load.values[i];
+  bodyForceFromLoads_ = true;
+  for (int i = 0; i < 3; ++i) loadedBodyForce_(i) += factor * load.values[i] * bodyForce_(i);
+}
+
+void StdBrick::zeroLoad() {
+  loadedBodyForce_.setZero();
+  bodyForceFromLoads_ = false;
 }
 
 Vector StdBrick::stressesAsVector() const {

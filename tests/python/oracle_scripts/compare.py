@@ -43,7 +43,6 @@ KNOWN_DIFFERENCES = {
     # --- found by these scripts, to be fixed ---
     ("cantilever3d", "PDelta*.localForce"):
         "elasticBeamColumn localForce with PDelta: OpenSees leaves the chord shear N*dv/L out",
-    ("brick_block", "selfWeight.*"): "stdBrick eleLoad -selfWeight scales the element's b1, b2, b3",
     ("truss_plastic", "*testNorm"): "testNorm is padded with zeros to maxIter",
     ("command_behaviour", "testNorm*"): "testNorm is padded with zeros to maxIter",
     ("command_behaviour", "test* before test"): "testIter/testNorm raise before any test exists",
