@@ -57,7 +57,10 @@ class ElasticBeam3d : public Element {
 
   // Basic forces q = kb v + q0 of the current trial state.
   Vector6 basicForce() const;
-  // Local end forces (12) in the local axes of the transformation.
+  // Local end forces (12) in the local axes, from the basic forces and the
+  // element loads alone: end shears (Mi + Mj)/L. As in OpenSees'
+  // 'localForce', a PDelta transformation's chord shear N*dv/L is left out
+  // (it is in the global 'force').
   Vector12 localForce() const;
 
  protected:
