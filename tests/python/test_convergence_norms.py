@@ -51,3 +51,17 @@ def test_iteration_norms_follow_the_hand_worked_newton_steps(ops, test):
     assert ops.testIter() == len(expected)
     norms = ops.testNorm()
     assert norms[: len(expected)] == pytest.approx(expected, rel=1e-12, abs=1e-12)
+
+
+def test_test_norm_has_max_iter_values_and_queries_need_a_test(ops):
+    # OpenSees' layout: maxIter values, zeros after the last iteration; both
+    # queries raise while no convergence test exists.
+    with pytest.raises(ops.OpenSeesError, match="no convergence test"):
+        ops.testIter()
+    with pytest.raises(ops.OpenSeesError, match="no convergence test"):
+        ops.testNorm()
+    _two_bars(ops, "NormUnbalance")
+    assert ops.analyze(1) == 0
+    norms = ops.testNorm()
+    assert len(norms) == 10
+    assert norms[ops.testIter():] == [0.0] * (10 - ops.testIter())

@@ -41,9 +41,6 @@ KNOWN_DIFFERENCES = {
         "constraints('Plain') in OpenSees ignores the value of an sp (warns, imposes 0); "
         "BeamSolid's Plain handler imposes it (docs/commands.md)",
     # --- found by these scripts, to be fixed ---
-    ("truss_plastic", "*testNorm"): "testNorm is padded with zeros to maxIter",
-    ("command_behaviour", "testNorm*"): "testNorm is padded with zeros to maxIter",
-    ("command_behaviour", "test* before test"): "testIter/testNorm raise before any test exists",
     ("element_responses", "*.eleType"): "eleType returns OpenSees class names",
     ("element_responses", "*.basicStiffness"): "basicStiffness response",
     ("element_responses", "*.?axis"): "xaxis/yaxis/zaxis responses",
