@@ -224,6 +224,20 @@ Response ElasticBeam3d::setResponse(const std::vector<std::string>& args) {
       what == "deformations")
     return Response::named({"eps", "thetaZ_1", "thetaZ_2", "thetaY_1", "thetaY_2", "thetaX"},
                            [this] { return Vector(transf_->basicTrialDisp()); });
+  if (what == "basicStiffness") {
+    // The 6x6 basic stiffness, row by row (OpenSees' layout).
+    return {Response::numberedNames("kb", 36), [this] {
+              const Matrix6 rowMajor = kb_.transpose();
+              return Vector(Eigen::Map<const Vector>(rowMajor.data(), 36));
+            }};
+  }
+  // Local axes in global coordinates, as OpenSees reports them.
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string name(1, "xyz"[axis]);
+    if (what == name + "axis" || what == name + "local")
+      return {{name + "_X", name + "_Y", name + "_Z"},
+              [this, axis] { return Vector(transf_->localAxes().row(axis).transpose()); }};
+  }
   return {};
 }
 

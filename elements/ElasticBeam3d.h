@@ -45,7 +45,8 @@ class ElasticBeam3d : public Element {
   bool acceptsLoad(ElementLoad::Type type) const override;
 
   // 'force'/'globalForce' (12), 'localForce' (12), 'basicForce' (6),
-  // 'basicDeformation'/'deformation' (6).
+  // 'basicDeformation'/'deformation' (6), 'basicStiffness' (36, row by row),
+  // 'xaxis'/'yaxis'/'zaxis' (also 'xlocal', ...: local axes, 3 each).
   Response setResponse(const std::vector<std::string>& args) override;
 
   void print(std::ostream& os) const override;

@@ -142,6 +142,21 @@ Response ZeroLength::setResponse(const std::vector<std::string>& args) {
   if (what == "deformation" || what == "deformations" || what == "basicDeformation" ||
       what == "basicDeformations")
     return {Response::numberedNames("e", numSprings()), [this] { return springDeformations(); }};
+  if (what == "basicStiffness") {
+    // n x n (one row per spring, row by row), the springs' tangents on the diagonal.
+    const int n = numSprings();
+    return {Response::numberedNames("k", n * n), [this, n] {
+              Vector v = Vector::Zero(n * n);
+              for (int k = 0; k < n; ++k) v[k * n + k] = springs_[k].material->tangent();
+              return v;
+            }};
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string name(1, "xyz"[axis]);
+    if (what == name + "axis" || what == name + "local")
+      return {{name + "_X", name + "_Y", name + "_Z"},
+              [this, axis] { return Vector(localAxes_.row(axis).transpose()); }};
+  }
   if (what == "material" && args.size() >= 2) {
     int k = 0;
     const std::string& s = args[1];

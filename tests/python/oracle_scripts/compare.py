@@ -40,10 +40,6 @@ KNOWN_DIFFERENCES = {
     ("command_behaviour", "sp Plain: *"):
         "constraints('Plain') in OpenSees ignores the value of an sp (warns, imposes 0); "
         "BeamSolid's Plain handler imposes it (docs/commands.md)",
-    # --- found by these scripts, to be fixed ---
-    ("element_responses", "*.basicStiffness"): "basicStiffness response",
-    ("element_responses", "*.?axis"): "xaxis/yaxis/zaxis responses",
-    ("element_responses", "*russ?.localForce*"): "truss localForce: 2*ndf values",
 }
 
 

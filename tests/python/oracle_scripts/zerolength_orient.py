@@ -20,7 +20,8 @@ def _analyse(ops, steps=1, dlambda=1.0, handler="Plain"):
 
 
 def _responses(ops, out, prefix, tag, nmat):
-    for r in ("force", "localForce", "basicForce", "deformation", "basicDeformation"):
+    for r in ("force", "localForce", "basicForce", "deformation", "basicDeformation", "basicStiffness",
+              "xaxis", "yaxis", "zaxis"):
         out[f"{prefix}{r}"] = ops.eleResponse(tag, r)
     out[prefix + "eleForce"] = ops.eleForce(tag)
     for k in range(1, nmat + 1):
