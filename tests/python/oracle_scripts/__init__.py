@@ -15,4 +15,5 @@ SCRIPTS = (
     "recorders_text",
     "element_responses",
     "command_behaviour",
+    "staged_constraints",
 )
