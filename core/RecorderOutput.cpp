@@ -165,7 +165,9 @@ void RecorderOutput::writeValues(const std::vector<double>& row) {
   char number[64];
   for (std::size_t i = 0; i < row.size(); ++i) {
     if (i) buffer_ += delimiter;
-    const int n = options_.scientific ? std::snprintf(number, sizeof number, "%.*e", options_.precision - 1, row[i])
+    // OpenSees: -precision p gives %.pg, or %.pe (p digits after the point)
+    // with -scientific.
+    const int n = options_.scientific ? std::snprintf(number, sizeof number, "%.*e", options_.precision, row[i])
                                       : std::snprintf(number, sizeof number, "%.*g", options_.precision, row[i]);
     buffer_.append(number, static_cast<std::size_t>(n));
   }

@@ -732,6 +732,22 @@ TEST_F(RecorderTest, PrecisionOptionSetsSignificantDigits) {
   EXPECT_EQ(maxSignificantDigits(slurp(f12)), 12u);
 }
 
+TEST_F(RecorderTest, ScientificWritesPrecisionDigitsAfterThePoint) {
+  // OpenSees' -scientific: %.pe with p = -precision (default 6), so p + 1
+  // significant digits (checked against OpenSeesPy 3.7.1).
+  const std::string f6 = file("sci6.out"), f3 = file("sci3.out");
+  add("Node", {s("-file"), s(f6), s("-scientific"), s("-node"), 3LL, s("-dof"), 1LL, 2LL, 3LL, s("disp")});
+  add("Node", {s("-file"), s(f3), s("-precision"), 3LL, s("-scientific"), s("-node"), 3LL, s("-dof"), 1LL, 2LL, 3LL,
+               s("disp")});
+  Vector u = Vector::Zero(6);
+  u << 0.1, -98765.4321, 0.0, 0.0, 0.0, 0.0;
+  domain_->node(3, "test").setTrialDisp(u);
+  domain_->record();
+  domain_->removeRecorders();
+  EXPECT_EQ(slurp(f6), "1.000000e-01 -9.876543e+04 0.000000e+00\n");
+  EXPECT_EQ(slurp(f3), "1.000e-01 -9.877e+04 0.000e+00\n");
+}
+
 TEST_F(RecorderTest, RemovedElementRecordsZeros) {
   const std::string f = file("force.out");
   add("Element", {s("-file"), s(f), s("-ele"), 7LL, s("section"), 3LL, s("force")});
