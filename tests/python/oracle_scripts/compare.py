@@ -169,6 +169,12 @@ def _is_number(v):
 
 def compare_values(key, bs, os_value):
     """Compares one entry; os_value (OpenSeesPy) is the reference."""
+    if isinstance(os_value, dict) or isinstance(bs, dict):
+        if not (isinstance(os_value, dict) and isinstance(bs, dict)) or set(os_value) != set(bs):
+            return Outcome(False, math.inf, f"fields differ: BeamSolid {_brief(bs)} vs OpenSees {_brief(os_value)}")
+        parts = {k: compare_values(f"{key}.{k}", bs[k], os_value[k]) for k in sorted(os_value)}
+        bad = [f"{k}: {o.note}" for k, o in parts.items() if not o.ok]
+        return Outcome(not bad, max(o.rel for o in parts.values()), "; ".join(bad))
     if os_value == "[]" and bs == "error":
         return Outcome(True, 0.0, "OpenSeesPy returns [], BeamSolid raises", "raises")
     if os_value == "[]" and isinstance(bs, list):

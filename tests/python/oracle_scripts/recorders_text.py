@@ -13,13 +13,39 @@ FILES = {
     "ele_force.out": ("Element", "-file", "ele_force.out", "-time", "-ele", 1, 2, "force"),
     "ele_local.out": ("Element", "-file", "ele_local.out", "-ele", 2, "localForce"),
     "ele_basic.out": ("Element", "-file", "ele_basic.out", "-time", "-precision", 8, "-ele", 1, "basicForce"),
+    "disp.csv": ("Node", "-csv", "disp.csv", "-time", "-node", 3, "-dof", 1, 2, "disp"),
+    "disp_sci.out": ("Node", "-file", "disp_sci.out", "-scientific", "-time", "-node", 3, "-dof", 1, 2, "disp"),
+    "disp_sci3.out": ("Node", "-file", "disp_sci3.out", "-precision", 3, "-scientific", "-node", 3, "-dof", 2, "disp"),
+    "disp_dT.out": ("Node", "-file", "disp_dT.out", "-time", "-dT", 0.25, "-node", 3, "-dof", 2, "disp"),
+    "disp_close.out": ("Node", "-file", "disp_close.out", "-closeOnWrite", "-time", "-node", 3, "-dof", 2, "disp"),
+    "disp_range.out": ("Node", "-file", "disp_range.out", "-time", "-nodeRange", 2, 3, "-dof", 2, 7, "disp"),
+    "env_disp.out": ("EnvelopeNode", "-file", "env_disp.out", "-time", "-node", 2, 3, "-dof", 2, 3, "disp"),
+    "env_disp_notime.out": ("EnvelopeNode", "-file", "env_disp_notime.out", "-node", 3, "-dof", 2, "disp"),
+    # Without -time: the time of a round-off extremum (a zero component) is arbitrary.
+    "env_force.out": ("EnvelopeElement", "-file", "env_force.out", "-ele", 1, "basicForce"),
+    "disp.bin": ("Node", "-binary", "disp.bin", "-time", "-node", 3, "-dof", 1, 2, "disp"),
 }
+BINARY_COLUMNS = {"disp.bin": 3}
 
 
 # Values that show the number format: %g switches to exponents below 1e-4
 # and from 10**precision on; exact zeros, negative numbers, round-off noise.
 VALUES = [(1e-05, 100000.0, 1234567.0, -0.000123456789, 0.1, 2.5e-300)]
 TIMES = (0.0, 1e-05, 0.30000000000000004, 123456.5, 1e7)
+
+
+def _read_binary(name, columns):
+    """Rows of native doubles, each followed by one byte (returned as such)."""
+    import struct
+
+    with open(name, "rb") as f:
+        data = f.read()
+    width = 8 * columns + 1
+    if len(data) % width:
+        return {"bytes": len(data), "error": "not a whole number of rows"}
+    rows = [data[i:i + width] for i in range(0, len(data), width)]
+    return {"rows": [list(struct.unpack(f"={columns}d", r[:-1])) for r in rows],
+            "terminators": [r[-1] for r in rows]}
 
 
 def run(ops):
@@ -48,11 +74,17 @@ def run(ops):
     ops.analysis("Static")
     ops.record()
     codes = [ops.analyze(1) for _ in range(3)]
+    # Unloading past zero, so that envelopes have distinct min and max.
+    ops.integrator("LoadControl", -0.25)
+    codes += [ops.analyze(1) for _ in range(3)]
     ops.wipe()
     # Tags count up from the first one; OpenSees does not restart the count
     # at wipe, so only the differences are comparable.
     out = {"codes": codes, "recorderTagSteps": [t - tags[0] for t in tags]}
     for name in FILES:
+        if name in BINARY_COLUMNS:
+            out["binary:" + name] = _read_binary(name, BINARY_COLUMNS[name])
+            continue
         with open(name) as f:
             out["file:" + name] = f.read()
 
