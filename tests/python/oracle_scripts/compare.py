@@ -44,6 +44,16 @@ KNOWN_DIFFERENCES = {
         "constraints('Plain') in OpenSees ignores the value of an sp (warns, imposes 0); "
         "BeamSolid's Plain handler imposes it (docs/commands.md)",
     ("staged_constraints", "eigen*"): "eigen is a placeholder in BeamSolid ('eigen: not available yet')",
+    ("command_behaviour", "DisplacementControl"): "BeamSolid has no DisplacementControl integrator yet",
+    ("command_behaviour", "load with * values"):
+        "OpenSees accepts a load with the wrong number of values silently; BeamSolid raises naming the node's ndf",
+    ("command_behaviour", "remove sp of nothing"):
+        "OpenSees ignores remove('sp') of a dof without sp; BeamSolid raises",
+    ("command_behaviour", "remove sp of a pattern: next step"):
+        "remove('sp', node, dof) in OpenSees removes only a fix/domain sp; BeamSolid also removes the sp "
+        "a load pattern holds (Domain::removeSP)",
+    ("command_behaviour", "remove sp of a fix: next step"):
+        "singular after removing a fix: OpenSees analyze returns -1 (set-up failed), BeamSolid -3 (algorithm)",
 }
 
 
