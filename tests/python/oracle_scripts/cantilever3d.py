@@ -1,5 +1,6 @@
 """3D elastic cantilever frame: elasticBeamColumn with Linear and PDelta
-transforms, joint offsets, -beamUniform element loads and reactions.
+transforms, joint offsets, -beamUniform and -beamPoint element loads and
+reactions.
 
 Two inclined members (not along a global axis, vecxz not orthogonal to the
 axis) so that every local/global rotation is exercised.
@@ -11,7 +12,7 @@ A, J, IY, IZ = 0.01, 2.0e-5, 1.2e-5, 3.0e-5
 RESPONSES = ("force", "localForce", "basicForce", "basicDeformations")
 
 
-def _build(ops, transf, offsets):
+def _build(ops, transf, offsets, point_loads=False):
     ops.wipe()
     ops.model("basic", "-ndm", 3, "-ndf", 6)
     ops.node(1, 0.0, 0.0, 0.0)
@@ -29,8 +30,13 @@ def _build(ops, transf, offsets):
     ops.timeSeries("Linear", 1)
     ops.pattern("Plain", 1, 1)
     ops.load(3, 3.0, -2.0, -40.0, 0.5, -0.3, 0.7)
-    ops.eleLoad("-ele", 1, "-type", "-beamUniform", 1.5, -0.8, 0.6)
-    ops.eleLoad("-ele", 2, "-type", "-beamUniform", -0.4, 1.1)
+    if point_loads:
+        ops.eleLoad("-ele", 1, "-type", "-beamPoint", 2.5, -1.2, 0.3, 0.8)
+        ops.eleLoad("-ele", 2, "-type", "-beamPoint", -0.7, 1.9, 0.65)
+        ops.eleLoad("-ele", 1, 2, "-type", "-beamUniform", 0.2, 0.3)
+    else:
+        ops.eleLoad("-ele", 1, "-type", "-beamUniform", 1.5, -0.8, 0.6)
+        ops.eleLoad("-ele", 2, "-type", "-beamUniform", -0.4, 1.1)
     ops.system("UmfPack")
     ops.constraints("Plain")
     ops.numberer("Plain")
@@ -40,8 +46,8 @@ def _build(ops, transf, offsets):
     ops.analysis("Static")
 
 
-def _case(ops, transf, offsets, out, prefix):
-    _build(ops, transf, offsets)
+def _case(ops, transf, offsets, out, prefix, point_loads=False):
+    _build(ops, transf, offsets, point_loads)
     codes = [ops.analyze(1) for _ in range(2)]
     out[prefix + "codes"] = codes
     out[prefix + "testIter"] = ops.testIter()
@@ -62,4 +68,5 @@ def run(ops):
     for transf in ("Linear", "PDelta"):
         for offsets in (False, True):
             _case(ops, transf, offsets, out, f"{transf}{'-offset' if offsets else ''}.")
+        _case(ops, transf, True, out, f"{transf}-points.", point_loads=True)
     return out
