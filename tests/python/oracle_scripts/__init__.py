@@ -16,4 +16,5 @@ SCRIPTS = (
     "element_responses",
     "command_behaviour",
     "staged_constraints",
+    "mixed_pile",
 )
