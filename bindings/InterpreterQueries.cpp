@@ -1,10 +1,10 @@
 // Query commands of the Interpreter: nodal and element results, tags, printModel.
 #include <fstream>
-#include <map>
 #include <iostream>
 #include <sstream>
 
 #include "bindings/Interpreter.h"
+#include "core/OpenSeesClassName.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
@@ -121,22 +121,12 @@ Result Interpreter::eleNodes(CommandArgs& a) {
   return domain_->element(tag, a.context()).nodeTags();
 }
 
-// eleType answers OpenSees' C++ class names (checked against OpenSeesPy
-// 3.7.1), which are not the command names; other types answer className().
+// eleType answers OpenSees' C++ class names, not the command names.
 Result Interpreter::eleType(CommandArgs& a) {
   const int tag = a.nextInt("eleTag");
   a.setContext("eleType " + std::to_string(tag));
   a.expectEnd();
-  static const std::map<std::string, std::string> openSeesClass = {
-      {"elasticBeamColumn", "ElasticBeam3d"},   {"truss", "Truss"},
-      {"corotTruss", "CorotTruss"},             {"zeroLength", "ZeroLength"},
-      {"stdBrick", "Brick"},                    {"bbarBrick", "BbarBrick"},
-      {"dispBeamColumn", "DispBeamColumn3d"},   {"forceBeamColumn", "ForceBeamColumn3d"},
-      {"nonlinearBeamColumn", "ForceBeamColumn3d"},
-  };
-  const std::string name = domain_->element(tag, a.context()).className();
-  const auto it = openSeesClass.find(name);
-  return it == openSeesClass.end() ? name : it->second;
+  return openSeesClassName(domain_->element(tag, a.context()).className());
 }
 
 Result Interpreter::getNodeTags(CommandArgs& a) {

@@ -24,6 +24,12 @@ FILES = {
     # Without -time: the time of a round-off extremum (a zero component) is arbitrary.
     "env_force.out": ("EnvelopeElement", "-file", "env_force.out", "-ele", 1, "basicForce"),
     "disp.bin": ("Node", "-binary", "disp.bin", "-time", "-node", 3, "-dof", 1, 2, "disp"),
+    "disp.xml": ("Node", "-xml", "disp.xml", "-time", "-node", 2, 3, "-dof", 1, 2, "disp"),
+    "reaction.xml": ("Node", "-xml", "reaction.xml", "-precision", 4, "-node", 1, "-dof", 3, 4, "reaction"),
+    "ele_basic.xml": ("Element", "-xml", "ele_basic.xml", "-time", "-ele", 1, "basicForce"),
+    "ele_force.xml": ("Element", "-xml", "ele_force.xml", "-ele", 1, 2, "force"),
+    "env_disp.xml": ("EnvelopeNode", "-xml", "env_disp.xml", "-time", "-node", 3, "-dof", 2, 3, "disp"),
+    "env_force.xml": ("EnvelopeElement", "-xml", "env_force.xml", "-ele", 1, "basicForce"),
 }
 BINARY_COLUMNS = {"disp.bin": 3}
 
