@@ -222,7 +222,7 @@ Response ElasticBeam3d::setResponse(const std::vector<std::string>& args) {
     return Response::named({"N", "Mz_1", "Mz_2", "My_1", "My_2", "T"}, [this] { return Vector(basicForce()); });
   if (what == "basicDeformation" || what == "basicDeformations" || what == "deformation" ||
       what == "deformations")
-    return Response::named({"eps", "thetaZ_1", "thetaZ_2", "thetaY_1", "thetaY_2", "thetaX"},
+    return Response::named({"eps", "theta11", "theta12", "theta21", "theta22", "phi"},
                            [this] { return Vector(transf_->basicTrialDisp()); });
   if (what == "basicStiffness") {
     // The 6x6 basic stiffness, row by row (OpenSees' layout).

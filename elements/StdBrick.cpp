@@ -243,9 +243,10 @@ Response StdBrick::setResponse(const std::vector<std::string>& args) {
   if (what == "strains" || what == "strain")
     return {perGaussPoint(kStrainNames), [this] { return strainsAsVector(); }};
   if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    // OpenSees' names for the brick: P<dof>_<node>.
     std::vector<std::string> names;
     for (int a = 1; a <= kNodes; ++a)
-      for (const char* c : {"Px_", "Py_", "Pz_"}) names.push_back(c + std::to_string(a));
+      for (const char* c : {"P1_", "P2_", "P3_"}) names.push_back(c + std::to_string(a));
     return {names, [this] { return Vector(resistingForce()); }};
   }
   if ((what == "material" || what == "integrPoint") && args.size() >= 2) {

@@ -118,10 +118,16 @@ Response Truss::setResponse(const std::vector<std::string>& args) {
   if (what == "axialForce" || what == "basicForce" || what == "basicForces")
     return {{"N"}, [this] { return Vector::Constant(1, axialForce()); }};
   if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    // OpenSees' names: P<node>_<dof>.
     std::vector<std::string> names;
-    const char* const labels[6] = {"Px_", "Py_", "Pz_", "Mx_", "My_", "Mz_"};
     for (int a = 0; a < 2; ++a)
-      for (int k = 0; k < nodes()[a]->ndf(); ++k) names.push_back(labels[k] + std::to_string(a + 1));
+      for (int k = 0; k < nodes()[a]->ndf(); ++k) {
+        std::string name = "P";  // built in steps: GCC 12 misreports a chain of + (-Wrestrict)
+        name += std::to_string(a + 1);
+        name += '_';
+        name += std::to_string(k + 1);
+        names.push_back(std::move(name));
+      }
     return {names, [this] { return Vector(resistingForce()); }};
   }
   if (what == "localForce" || what == "localForces") {

@@ -117,3 +117,36 @@ def test_zero_length_basic_stiffness_and_axes(ops):
     assert ops.eleResponse(1, "xaxis") == pytest.approx([0.0, 1.0, 0.0], abs=1e-15)
     assert ops.eleResponse(1, "yaxis") == pytest.approx([-1.0, 0.0, 0.0], abs=1e-15)
     assert ops.eleResponse(1, "zaxis") == pytest.approx([0.0, 0.0, 1.0], abs=1e-15)
+
+
+def test_response_component_names_are_opensees(ops, tmp_path):
+    # The <ResponseType> names OpenSees writes in XML recorder headers.
+    import re
+
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 0.0, 0.0, 3.0)
+    ops.geomTransf("Linear", 1, 1.0, 0.0, 0.0)
+    ops.element("elasticBeamColumn", 1, 1, 2, 0.5, 30e6, 12e6, 0.04, 0.02, 0.02, 1)
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(3, 0.0, 0.0, 0.0)
+    ops.node(4, 1.0, 0.0, 0.0)
+    ops.uniaxialMaterial("Elastic", 1, 100.0)
+    ops.element("truss", 2, 3, 4, 1.0, 1)
+    ops.element("zeroLength", 3, 3, 4, "-mat", 1, 1, "-dir", 1, 3)
+    cases = {
+        (1, "basicDeformations"): ["eps", "theta11", "theta12", "theta21", "theta22", "phi"],
+        (2, "force"): ["P1_1", "P1_2", "P1_3", "P2_1", "P2_2", "P2_3"],
+        (2, "material 1 stressStrain"): ["sig11", "eps11"],
+        (3, "basicForce"): ["P1", "P2"],
+        (3, "material 2 tangent"): ["C11"],
+    }
+    files = {}
+    for (tag, response), names in cases.items():
+        files[(tag, response)] = str(tmp_path / f"{tag}_{response.replace(' ', '_')}.xml")
+        ops.recorder("Element", "-xml", files[(tag, response)], "-ele", tag, *response.split())
+    ops.record()
+    ops.wipe()
+    for key, names in cases.items():
+        with open(files[key]) as f:
+            assert re.findall(r"<ResponseType>(.*?)</ResponseType>", f.read()) == names, key

@@ -17,4 +17,5 @@ SCRIPTS = (
     "command_behaviour",
     "staged_constraints",
     "mixed_pile",
+    "response_names",
 )

@@ -44,6 +44,11 @@ KNOWN_DIFFERENCES = {
         "constraints('Plain') in OpenSees ignores the value of an sp (warns, imposes 0); "
         "BeamSolid's Plain handler imposes it (docs/commands.md)",
     ("staged_constraints", "eigen*"): "eigen is a placeholder in BeamSolid ('eigen: not available yet')",
+    ("response_names", "stdBrick st*"):
+        "stdBrick stresses/strains: BeamSolid suffixes the Gauss point (sigma11_1 ... sigma13_8) so that "
+        "sidecar columns are unique; OpenSees repeats sigma11 ... sigma13 eight times",
+    ("response_names", "truss3 localForce"):
+        "OpenSees' truss localForce recorder writes 2*ndf values but no ResponseType names",
     ("command_behaviour", "DisplacementControl"): "BeamSolid has no DisplacementControl integrator yet",
     ("command_behaviour", "load with * values"):
         "OpenSees accepts a load with the wrong number of values silently; BeamSolid raises naming the node's ndf",
