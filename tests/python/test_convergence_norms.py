@@ -65,3 +65,14 @@ def test_test_norm_has_max_iter_values_and_queries_need_a_test(ops):
     norms = ops.testNorm()
     assert len(norms) == 10
     assert norms[ops.testIter():] == [0.0] * (10 - ops.testIter())
+
+
+def test_failure_message_prints_small_norms_readably(ops, capfd):
+    # NormDispIncr needs three iterations here; with two the step fails after
+    # norms 0.02, 0.02, and the warning shows them as numbers, not 0.000000.
+    _two_bars(ops, "NormDispIncr")
+    ops.test("NormDispIncr", 1e-20, 2)
+    ops.analysis("Static")
+    assert ops.analyze(1) < 0
+    err = capfd.readouterr().err
+    assert "last norm 0.02, tolerance 1e-20" in err
