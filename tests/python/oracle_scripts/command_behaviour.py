@@ -156,6 +156,28 @@ def run(ops):
     out["analyze after wipeAnalysis"] = _call(ops, "analyze", 1)
     ops.wipe()
 
+    # A model that is singular from the first step (a free dof without
+    # stiffness): what analyze does.
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 1.0, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1)
+    ops.uniaxialMaterial("Elastic", 1, 100.0)
+    ops.element("truss", 1, 1, 2, 1.0, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 1.0, 0.0, 0.0)
+    ops.system("UmfPack")
+    ops.constraints("Plain")
+    ops.numberer("Plain")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Newton")
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    out["analyze singular from the start"] = _call(ops, "analyze", 1)
+    out["time after the singular step"] = ops.getTime()
+
     # remove('sp', node, dof): of a fix, of a pattern's sp, of nothing; the
     # next step shows whether the constraint is gone.
     for label, args in (("of a pattern", ("sp", 2, 1)), ("of a fix", ("sp", 2, 3)), ("of nothing", ("sp", 2, 2))):
