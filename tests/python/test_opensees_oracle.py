@@ -8,8 +8,9 @@ exists.
 
 Tolerances (see oracle_scripts/compare.py): numbers 1e-8 relative to the
 largest magnitude of the entry (linear answers and nonlinear answers
-converged to 1e-12); iteration norms 1e-6 of their own size down to 1e-9 of
-the largest norm; iteration counts, return codes and sizes equal; recorder
+converged to 1e-12), 1e-6 for the Penalty-handler runs (alpha 1e12, converged
+to 1e-9); iteration norms 1e-6 of their own size down to 1e-9 of the largest
+norm; iteration counts, return codes and sizes equal; recorder
 files with the same lines, delimiters and tokens, numbers equal to the
 printed digits (2e-5 of the line's largest value).
 
