@@ -145,12 +145,19 @@ Result Interpreter::getEigenvalues(CommandArgs& a) {
 
 Result Interpreter::testIter(CommandArgs& a) {
   a.expectEnd();
-  return static_cast<long long>(components_.test ? components_.test->numIterations() : 0);
+  if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
+  return static_cast<long long>(components_.test->numIterations());
 }
 
+// As OpenSees: one value per allowed iteration (maxIter), the norms of the
+// last step's iterations followed by zeros.
 Result Interpreter::testNorm(CommandArgs& a) {
   a.expectEnd();
-  return components_.test ? components_.test->norms() : std::vector<double>{};
+  if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
+  std::vector<double> norms = components_.test->norms();
+  if (static_cast<int>(norms.size()) < components_.test->maxIterations())
+    norms.resize(components_.test->maxIterations(), 0.0);
+  return norms;
 }
 
 Result Interpreter::systemSize(CommandArgs& a) {
