@@ -43,7 +43,6 @@ KNOWN_DIFFERENCES = {
     ("command_behaviour", "sp Plain: *"):
         "constraints('Plain') in OpenSees ignores the value of an sp (warns, imposes 0); "
         "BeamSolid's Plain handler imposes it (docs/commands.md)",
-    ("staged_constraints", "eigen*"): "eigen is a placeholder in BeamSolid ('eigen: not available yet')",
     ("response_names", "stdBrick st*"):
         "stdBrick stresses/strains: BeamSolid suffixes the Gauss point (sigma11_1 ... sigma13_8) so that "
         "sidecar columns are unique; OpenSees repeats sigma11 ... sigma13 eight times",
@@ -53,7 +52,6 @@ KNOWN_DIFFERENCES = {
         "policy (docs/commands.md): BeamSolid raises, naming the dofs without stiffness, when the model is "
         "singular before any step converged; OpenSees returns -3, so a script that checks the code and "
         "retries stops with an exception in BeamSolid",
-    ("command_behaviour", "DisplacementControl"): "BeamSolid has no DisplacementControl integrator yet",
     ("command_behaviour", "load with * values"):
         "OpenSees accepts a load with the wrong number of values silently; BeamSolid raises naming the node's ndf",
     ("command_behaviour", "remove sp of nothing"):
