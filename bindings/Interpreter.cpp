@@ -79,6 +79,11 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"getLoadFactor", &Interpreter::getLoadFactor},
       {"printModel", &Interpreter::printModel},
       {"getEigenvalues", &Interpreter::getEigenvalues},
+      {"testUniaxialMaterial", &Interpreter::testUniaxialMaterial},
+      {"setStrain", &Interpreter::setStrain},
+      {"getStrain", &Interpreter::getStrain},
+      {"getStress", &Interpreter::getStress},
+      {"getTangent", &Interpreter::getTangent},
   };
   return table;
 }

@@ -9,6 +9,7 @@
 #include "analysis/StaticAnalysis.h"
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
+#include "materials/uniaxial/UniaxialMaterial.h"
 
 namespace beamsolid {
 
@@ -109,6 +110,13 @@ class Interpreter {
   Result printModel(CommandArgs&);
   Result getEigenvalues(CommandArgs&);
 
+  // --- driving one uniaxial material (InterpreterMaterials.cpp) ---
+  Result testUniaxialMaterial(CommandArgs&);
+  Result setStrain(CommandArgs&);
+  Result getStrain(CommandArgs&);
+  Result getStress(CommandArgs&);
+  Result getTangent(CommandArgs&);
+
   // Helpers
   Result nodeVectorQuery(CommandArgs&, const char* what, const Vector& (Node::*get)() const);
   void requireModel(CommandArgs& a) const;
@@ -125,6 +133,8 @@ class Interpreter {
   AnalysisComponents components_;
   std::unique_ptr<StaticAnalysis> analysis_;
   std::vector<double> eigenvalues_;
+  // A copy of the material under testUniaxialMaterial; setStrain commits it.
+  std::unique_ptr<UniaxialMaterial> testMaterial_;
 };
 
 }  // namespace beamsolid

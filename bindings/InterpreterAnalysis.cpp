@@ -12,19 +12,6 @@ using Result = Interpreter::Result;
 
 namespace {
 template <class Product, class Table>
-std::unique_ptr<Product> buildAnalysisObject(CommandArgs& a, Domain& domain, const Table& table) {
-  const std::string type = a.nextString("type");
-  if (!table.has(type)) {
-    std::string known;
-    for (const auto& t : table.types()) known += (known.empty() ? "" : ", ") + t;
-    a.fail("type '" + type + "' is unknown (known: " + known + ")");
-  }
-  a.setContext(a.command() + " " + type);
-  return table.get(type)(a, domain);
-}
-
-
-template <class Product, class Table>
 std::unique_ptr<Product> buildDefault(const Table& table, Domain& domain, const std::string& type,
                                       std::vector<CommandArgs::Value> args) {
   CommandArgs a("default", std::move(args));
@@ -33,7 +20,7 @@ std::unique_ptr<Product> buildDefault(const Table& table, Domain& domain, const 
 }  // namespace
 
 Result Interpreter::constraints(CommandArgs& a) {
-  components_.handler = buildAnalysisObject<ConstraintHandler>(a, *domain_, Registry::global().constraintHandlers);
+  components_.handler = Registry::global().constraintHandlers.build(a, *domain_);
   // A new handler may reuse the address of one freed earlier, so the model's
   // pointer comparison cannot be trusted to notice the change: renumber.
   if (analysis_) analysis_->model().invalidate();
@@ -41,29 +28,29 @@ Result Interpreter::constraints(CommandArgs& a) {
 }
 
 Result Interpreter::numberer(CommandArgs& a) {
-  components_.numberer = buildAnalysisObject<Numberer>(a, *domain_, Registry::global().numberers);
+  components_.numberer = Registry::global().numberers.build(a, *domain_);
   if (analysis_) analysis_->model().invalidate();  // as for constraints()
   return {};
 }
 
 Result Interpreter::system(CommandArgs& a) {
-  components_.solver = buildAnalysisObject<LinearSolver>(a, *domain_, Registry::global().systems);
+  components_.solver = Registry::global().systems.build(a, *domain_);
   if (analysis_) analysis_->model().invalidate();
   return {};
 }
 
 Result Interpreter::test(CommandArgs& a) {
-  components_.test = buildAnalysisObject<ConvergenceTest>(a, *domain_, Registry::global().tests);
+  components_.test = Registry::global().tests.build(a, *domain_);
   return {};
 }
 
 Result Interpreter::algorithm(CommandArgs& a) {
-  components_.algorithm = buildAnalysisObject<Algorithm>(a, *domain_, Registry::global().algorithms);
+  components_.algorithm = Registry::global().algorithms.build(a, *domain_);
   return {};
 }
 
 Result Interpreter::integrator(CommandArgs& a) {
-  components_.integrator = buildAnalysisObject<Integrator>(a, *domain_, Registry::global().integrators);
+  components_.integrator = Registry::global().integrators.build(a, *domain_);
   if (analysis_) analysis_->model().invalidate();
   return {};
 }
@@ -158,12 +145,19 @@ Result Interpreter::getEigenvalues(CommandArgs& a) {
 
 Result Interpreter::testIter(CommandArgs& a) {
   a.expectEnd();
-  return static_cast<long long>(components_.test ? components_.test->numIterations() : 0);
+  if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
+  return static_cast<long long>(components_.test->numIterations());
 }
 
+// As OpenSees: one value per allowed iteration (maxIter), the norms of the
+// last step's iterations followed by zeros.
 Result Interpreter::testNorm(CommandArgs& a) {
   a.expectEnd();
-  return components_.test ? components_.test->norms() : std::vector<double>{};
+  if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
+  std::vector<double> norms = components_.test->norms();
+  if (static_cast<int>(norms.size()) < components_.test->maxIterations())
+    norms.resize(components_.test->maxIterations(), 0.0);
+  return norms;
 }
 
 Result Interpreter::systemSize(CommandArgs& a) {

@@ -21,6 +21,7 @@ Result Interpreter::wipe(CommandArgs& a) {
   currentPatternTag_ = -1;
   currentSectionTag_ = -1;
   eigenvalues_.clear();
+  testMaterial_.reset();
   return {};
 }
 
@@ -197,44 +198,30 @@ Result Interpreter::mass(CommandArgs& a) {
   return {};
 }
 
-namespace {
-// Parses "<command> <type> <tag> ..." through the registry table.
-template <class Product, class Table>
-std::unique_ptr<Product> build(CommandArgs& a, Domain& domain, const Table& table) {
-  const std::string type = a.nextString("type");
-  if (!table.has(type)) {
-    std::string known;
-    for (const auto& t : table.types()) known += (known.empty() ? "" : ", ") + t;
-    a.fail("type '" + type + "' is unknown (known: " + known + ")");
-  }
-  a.setContext(a.command() + " " + type);
-  return table.get(type)(a, domain);
-}
-}  // namespace
 
 Result Interpreter::uniaxialMaterial(CommandArgs& a) {
-  auto m = build<UniaxialMaterial>(a, *domain_, Registry::global().uniaxialMaterials);
+  auto m = Registry::global().uniaxialMaterials.build(a, *domain_);
   const int tag = m->tag();
   domain_->uniaxialMaterials.add(tag, std::move(m), a.context());
   return {};
 }
 
 Result Interpreter::nDMaterial(CommandArgs& a) {
-  auto m = build<NDMaterial>(a, *domain_, Registry::global().ndMaterials);
+  auto m = Registry::global().ndMaterials.build(a, *domain_);
   const int tag = m->tag();
   domain_->ndMaterials.add(tag, std::move(m), a.context());
   return {};
 }
 
 Result Interpreter::geomTransf(CommandArgs& a) {
-  auto t = build<CrdTransf>(a, *domain_, Registry::global().geomTransfs);
+  auto t = Registry::global().geomTransfs.build(a, *domain_);
   const int tag = t->tag();
   domain_->geomTransfs.add(tag, std::move(t), a.context());
   return {};
 }
 
 Result Interpreter::timeSeries(CommandArgs& a) {
-  auto t = build<TimeSeries>(a, *domain_, Registry::global().timeSeries);
+  auto t = Registry::global().timeSeries.build(a, *domain_);
   const int tag = t->tag();
   domain_->timeSeries.add(tag, std::move(t), a.context());
   return {};
@@ -242,7 +229,7 @@ Result Interpreter::timeSeries(CommandArgs& a) {
 
 Result Interpreter::element(CommandArgs& a) {
   requireModel(a);
-  auto e = build<Element>(a, *domain_, Registry::global().elements);
+  auto e = Registry::global().elements.build(a, *domain_);
   domain_->addElement(std::move(e), a.context());
   return {};
 }
@@ -419,7 +406,7 @@ Result Interpreter::remove(CommandArgs& a) {
 }
 
 Result Interpreter::recorder(CommandArgs& a) {
-  auto r = build<Recorder>(a, *domain_, Registry::global().recorders);
+  auto r = Registry::global().recorders.build(a, *domain_);
   return static_cast<long long>(domain_->addRecorder(std::move(r)));
 }
 

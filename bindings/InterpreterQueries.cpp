@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "bindings/Interpreter.h"
+#include "core/OpenSeesClassName.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
@@ -120,11 +121,12 @@ Result Interpreter::eleNodes(CommandArgs& a) {
   return domain_->element(tag, a.context()).nodeTags();
 }
 
+// eleType answers OpenSees' C++ class names, not the command names.
 Result Interpreter::eleType(CommandArgs& a) {
   const int tag = a.nextInt("eleTag");
   a.setContext("eleType " + std::to_string(tag));
   a.expectEnd();
-  return domain_->element(tag, a.context()).className();
+  return openSeesClassName(domain_->element(tag, a.context()).className());
 }
 
 Result Interpreter::getNodeTags(CommandArgs& a) {

@@ -4,6 +4,7 @@
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
+#include "core/OpenSeesClassName.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
 #include "core/ResponseEnvelope.h"
@@ -61,7 +62,7 @@ ElementRecorder::ElementRecorder(const Domain& domain, Spec spec, bool envelope)
   std::vector<RecorderOutput::XmlBlock> blocks;
   if (echoTime && !envelope) {
     columns.push_back(RecorderOutput::Column::time());
-    blocks.push_back({"TimeOutput", {}, {"time"}});
+    blocks.push_back(RecorderOutput::timeBlock());
   }
   std::size_t width = 0;
   for (int tag : spec_.elementTags) {
@@ -70,18 +71,25 @@ ElementRecorder::ElementRecorder(const Domain& domain, Spec spec, bool envelope)
     if (!r)
       throw OpenSeesError(spec_.context + ": element " + std::to_string(tag) + " (" + element.className() +
                           ") has no response '" + response + "'");
-    RecorderOutput::XmlBlock block{"ElementOutput",
-                                   {{"eleTag", std::to_string(tag)}, {"eleType", element.className()}},
-                                   {}};
+    // OpenSees' XML: eleType (its class name) before eleTag; an envelope
+    // with -time wraps each element's block with one time block per value.
+    RecorderOutput::XmlBlock block{
+        "ElementOutput", {{"eleType", openSeesClassName(element.className())}, {"eleTag", std::to_string(tag)}}, {}};
     for (std::size_t i = 0; i < element.nodeTags().size(); ++i)
       block.attributes.emplace_back("node" + std::to_string(i + 1), std::to_string(element.nodeTags()[i]));
     for (const std::string& component : r.componentNames) {
       columns.push_back(
           RecorderOutput::Column::ofElement("e" + std::to_string(tag) + "_" + component, tag, response, component));
-      if (envelope && echoTime) block.responseTypes.push_back("time");
       block.responseTypes.push_back(component);
     }
-    blocks.push_back(std::move(block));
+    if (envelope && echoTime) {
+      RecorderOutput::XmlBlock wrapper{"EnvelopeElementOutput", {}, {}};
+      wrapper.children.push_back(std::move(block));
+      wrapper.children.insert(wrapper.children.end(), r.componentNames.size(), RecorderOutput::timeBlock());
+      blocks.push_back(std::move(wrapper));
+    } else {
+      blocks.push_back(std::move(block));
+    }
     width += r.size();
     entries_.push_back({tag, &element, std::move(r)});
   }

@@ -1,6 +1,7 @@
 #include "core/NodeRecorder.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 #include "core/CommandArgs.h"
@@ -141,23 +142,26 @@ NodeRecorder::NodeRecorder(const Domain& domain, Spec spec, bool envelope) : spe
   std::vector<RecorderOutput::XmlBlock> blocks;
   if (echoTime && !envelope) {
     columns.push_back(RecorderOutput::Column::time());
-    blocks.push_back({"TimeOutput", {}, {"time"}});
+    blocks.push_back(RecorderOutput::timeBlock());
   }
   for (int tag : spec_.nodeTags) {
     const Node& node = domain.node(tag, spec_.context);
     previousDisp_.push_back(node.trialDisp());
+    // OpenSees' XML: coordinates at the recorder's precision; an envelope
+    // names the node only and puts a time block before each response type.
     RecorderOutput::XmlBlock block{"NodeOutput", {{"nodeTag", std::to_string(tag)}}, {}};
-    for (int i = 0; i < 3; ++i) {
-      std::ostringstream coord;
-      coord.precision(17);
-      coord << node.crd()[i];
-      block.attributes.emplace_back("coord" + std::to_string(i + 1), coord.str());
+    if (!envelope) {
+      for (int i = 0; i < 3; ++i) {
+        char coord[64];
+        std::snprintf(coord, sizeof coord, "%.*g", spec_.output.precision, node.crd()[i]);
+        block.attributes.emplace_back("coord" + std::to_string(i + 1), coord);
+      }
     }
+    block.timeBeforeEach = envelope && echoTime;
     for (int d : spec_.dofs) {
       const std::string type = prefix + std::to_string(d + 1);
       columns.push_back(RecorderOutput::Column::ofNode("n" + std::to_string(tag) + "_" + type, tag, d + 1,
                                                        spec_.responseName));
-      if (envelope && echoTime) block.responseTypes.push_back("time");
       block.responseTypes.push_back(type);
     }
     blocks.push_back(std::move(block));

@@ -138,17 +138,30 @@ void RecorderOutput::check(const char* action) {
   if (!file_) throw OpenSeesError(context_ + ": " + action + " file '" + options_.path + "' failed");
 }
 
+// The XML layout is OpenSees' to the byte (checked against OpenSeesPy
+// 3.7.1): the schema attributes on the root, four spaces per level, data rows
+// indented by eight with a blank after every value.
 void RecorderOutput::writeHeader() {
   if (options_.format != Format::XML) return;
-  file_ << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<OpenSees>\n";
-  for (const XmlBlock& b : xmlBlocks_) {
-    file_ << "  <" << b.element;
-    for (const auto& [name, value] : b.attributes) file_ << ' ' << name << "=\"" << xmlEscape(value) << '"';
-    file_ << ">\n";
-    for (const std::string& r : b.responseTypes) file_ << "    <ResponseType>" << xmlEscape(r) << "</ResponseType>\n";
-    file_ << "  </" << b.element << ">\n";
+  file_ << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           " <OpenSees\n"
+           "  xmlns:xsi = \"http://www.w3.org/2001/XMLSchema-instance\"\n"
+           "  xsi:noNamespaceSchemaLocation = \"http://OpenSees.berkeley.edu/xml-schema/xmlns/OpenSees.xsd\">\n";
+  for (const XmlBlock& b : xmlBlocks_) writeBlock(b, 1);
+  file_ << "    <Data>\n";
+}
+
+void RecorderOutput::writeBlock(const XmlBlock& b, int depth) {
+  const std::string indent(4 * depth, ' ');
+  file_ << indent << '<' << b.element;
+  for (const auto& [name, value] : b.attributes) file_ << ' ' << name << "=\"" << xmlEscape(value) << '"';
+  file_ << ">\n";
+  for (const std::string& r : b.responseTypes) {
+    if (b.timeBeforeEach) writeBlock(timeBlock(), depth + 1);
+    file_ << indent << "    <ResponseType>" << xmlEscape(r) << "</ResponseType>\n";
   }
-  file_ << "  <Data>\n";
+  for (const XmlBlock& child : b.children) writeBlock(child, depth + 1);
+  file_ << indent << "</" << b.element << ">\n";
 }
 
 void RecorderOutput::writeValues(const std::vector<double>& row) {
@@ -161,13 +174,18 @@ void RecorderOutput::writeValues(const std::vector<double>& row) {
     return;
   }
   const char delimiter = options_.format == Format::CSV ? ',' : ' ';
+  const bool xml = options_.format == Format::XML;
   buffer_.clear();
+  if (xml) buffer_ += "        ";
   char number[64];
   for (std::size_t i = 0; i < row.size(); ++i) {
-    if (i) buffer_ += delimiter;
-    const int n = options_.scientific ? std::snprintf(number, sizeof number, "%.*e", options_.precision - 1, row[i])
+    if (i && !xml) buffer_ += delimiter;
+    // OpenSees: -precision p gives %.pg, or %.pe (p digits after the point)
+    // with -scientific.
+    const int n = options_.scientific ? std::snprintf(number, sizeof number, "%.*e", options_.precision, row[i])
                                       : std::snprintf(number, sizeof number, "%.*g", options_.precision, row[i]);
     buffer_.append(number, static_cast<std::size_t>(n));
+    if (xml) buffer_ += ' ';
   }
   buffer_ += '\n';
   file_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
@@ -217,7 +235,7 @@ void RecorderOutput::close() {
   closed_ = true;
   if (options_.format == Format::XML) {
     if (!file_.is_open()) open(false);
-    file_ << "  </Data>\n</OpenSees>\n";
+    file_ << "        </Data>\n</OpenSees>\n";
   }
   if (file_.is_open()) {
     file_.flush();

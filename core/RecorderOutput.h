@@ -57,12 +57,16 @@ class RecorderOutput {
   };
 
   // One block of the XML header, e.g. <NodeOutput nodeTag="3" ...> with its
-  // <ResponseType> entries.
+  // <ResponseType> entries, then its nested blocks. With timeBeforeEach, a
+  // <TimeOutput> block precedes every ResponseType (OpenSees' envelope layout).
   struct XmlBlock {
     std::string element;
     std::vector<std::pair<std::string, std::string>> attributes;
     std::vector<std::string> responseTypes;
+    std::vector<XmlBlock> children = {};
+    bool timeBeforeEach = false;
   };
+  static XmlBlock timeBlock() { return XmlBlock{"TimeOutput", {}, {"time"}}; }
 
   // Opens (creates or truncates; appends with -fileAdd) the file, writes the
   // XML header or the sidecar. Errors are OpenSeesErrors prefixed by context.
@@ -95,6 +99,7 @@ class RecorderOutput {
  private:
   void open(bool truncate);
   void writeHeader();
+  void writeBlock(const XmlBlock& block, int depth);
   void writeValues(const std::vector<double>& row);
   void writeSidecar() const;
   void check(const char* action);

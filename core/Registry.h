@@ -47,6 +47,17 @@ class FactoryTable {
     if (it == factories_.end()) throw OpenSeesError(kind_ + " type " + type + " is unknown");
     return it->second;
   }
+  // Reads the type name from `args` and builds it; an unknown type lists the known ones.
+  std::unique_ptr<Product> build(CommandArgs& args, Domain& domain) const {
+    const std::string type = args.nextString("type");
+    if (!has(type)) {
+      std::string known;
+      for (const auto& kv : factories_) known += (known.empty() ? "" : ", ") + kv.first;
+      args.fail("type '" + type + "' is unknown (known: " + known + ")");
+    }
+    args.setContext(args.command() + " " + type);
+    return get(type)(args, domain);
+  }
   std::vector<std::string> types() const {
     std::vector<std::string> out;
     for (const auto& kv : factories_) out.push_back(kv.first);

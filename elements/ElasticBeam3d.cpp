@@ -88,7 +88,24 @@ ElasticBeam3d::Vector6 ElasticBeam3d::basicForce() const {
 }
 
 ElasticBeam3d::Vector12 ElasticBeam3d::localForce() const {
-  return transf_->localResistingForce(basicForce(), p0_);
+  // The basic system's equilibrium (CrdTransf.h), without any geometric term.
+  const Vector6 q = basicForce();
+  const double shearY = (q[1] + q[2]) / length_;
+  const double shearZ = (q[3] + q[4]) / length_;
+  Vector12 p = p0_;
+  p[0] -= q[0];
+  p[6] += q[0];
+  p[1] += shearY;
+  p[7] -= shearY;
+  p[2] -= shearZ;
+  p[8] += shearZ;
+  p[3] -= q[5];
+  p[9] += q[5];
+  p[4] += q[3];
+  p[10] += q[4];
+  p[5] += q[1];
+  p[11] += q[2];
+  return p;
 }
 
 MatrixView ElasticBeam3d::tangentStiff() {
@@ -205,8 +222,22 @@ Response ElasticBeam3d::setResponse(const std::vector<std::string>& args) {
     return Response::named({"N", "Mz_1", "Mz_2", "My_1", "My_2", "T"}, [this] { return Vector(basicForce()); });
   if (what == "basicDeformation" || what == "basicDeformations" || what == "deformation" ||
       what == "deformations")
-    return Response::named({"eps", "thetaZ_1", "thetaZ_2", "thetaY_1", "thetaY_2", "thetaX"},
+    return Response::named({"eps", "theta11", "theta12", "theta21", "theta22", "phi"},
                            [this] { return Vector(transf_->basicTrialDisp()); });
+  if (what == "basicStiffness") {
+    // The 6x6 basic stiffness, row by row (OpenSees' layout).
+    return {Response::numberedNames("kb", 36), [this] {
+              const Matrix6 rowMajor = kb_.transpose();
+              return Vector(Eigen::Map<const Vector>(rowMajor.data(), 36));
+            }};
+  }
+  // Local axes in global coordinates, as OpenSees reports them.
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string name(1, "xyz"[axis]);
+    if (what == name + "axis" || what == name + "local")
+      return {{name + "_X", name + "_Y", name + "_Z"},
+              [this, axis] { return Vector(transf_->localAxes().row(axis).transpose()); }};
+  }
   return {};
 }
 

@@ -45,7 +45,8 @@ class ElasticBeam3d : public Element {
   bool acceptsLoad(ElementLoad::Type type) const override;
 
   // 'force'/'globalForce' (12), 'localForce' (12), 'basicForce' (6),
-  // 'basicDeformation'/'deformation' (6).
+  // 'basicDeformation'/'deformation' (6), 'basicStiffness' (36, row by row),
+  // 'xaxis'/'yaxis'/'zaxis' (also 'xlocal', ...: local axes, 3 each).
   Response setResponse(const std::vector<std::string>& args) override;
 
   void print(std::ostream& os) const override;
@@ -57,7 +58,10 @@ class ElasticBeam3d : public Element {
 
   // Basic forces q = kb v + q0 of the current trial state.
   Vector6 basicForce() const;
-  // Local end forces (12) in the local axes of the transformation.
+  // Local end forces (12) in the local axes, from the basic forces and the
+  // element loads alone: end shears (Mi + Mj)/L. As in OpenSees'
+  // 'localForce', a PDelta transformation's chord shear N*dv/L is left out
+  // (it is in the global 'force').
   Vector12 localForce() const;
 
  protected:

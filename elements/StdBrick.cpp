@@ -19,9 +19,12 @@ namespace {
 constexpr double kNodeXi[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                   {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
 
-// 2x2x2 Gauss rule: the points sit at +-1/sqrt(3) in the same pattern as the
-// nodes (Gauss point k is the one nearest node k), every weight is 1.
-double gaussCoordinate(int point, int direction) { return kNodeXi[point][direction] / std::sqrt(3.0); }
+// 2x2x2 Gauss rule at +-1/sqrt(3), every weight 1. The points are numbered
+// as OpenSees numbers them (what 'stresses', 'strains' and 'material' k
+// report): xi varies slowest, zeta fastest, (-,-,-), (-,-,+), (-,+,-), ...
+constexpr double kGaussXi[8][3] = {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {-1, 1, 1},
+                                   {1, -1, -1},  {1, -1, 1},  {1, 1, -1},  {1, 1, 1}};
+double gaussCoordinate(int point, int direction) { return kGaussXi[point][direction] / std::sqrt(3.0); }
 
 // dN_a/d(xi, eta, zeta) of the trilinear shape functions at a natural point.
 Eigen::Matrix<double, 8, 3> naturalGradients(double xi, double eta, double zeta) {
@@ -169,8 +172,9 @@ VectorView StdBrick::resistingForce() {
     stress = materials_[g]->stress();
     force_.noalias() += weightedDetJ_[g] * (B.transpose() * stress);
   }
-  // Body forces per unit volume plus self-weight accelerations times density.
-  const Vector3 perVolume = bodyForce_ + materials_[0]->density() * selfWeight_;
+  // Body force per unit volume: the element's own, or the one of the active
+  // -selfWeight loads (see StdBrick.h).
+  const Vector3& perVolume = bodyForceFromLoads_ ? loadedBodyForce_ : bodyForce_;
   for (int a = 0; a < kNodes; ++a) force_.segment<3>(3 * a) -= nodalVolume_(a) * perVolume;
   return viewOf(force_);
 }
@@ -202,9 +206,15 @@ void StdBrick::addLoad(const ElementLoad& load, double factor) {
     return;
   }
   if (load.values.size() != 3)
-    throw OpenSeesError(context() + ": -selfWeight expects 3 values (bx, by, bz), got " +
+    throw OpenSeesError(context() + ": -selfWeight expects 3 values (factors on b1, b2, b3), got " +
                         std::to_string(load.values.size()));
-  for (int i = 0; i < 3; ++i) selfWeight_(i) += factor * load.values[i];
+  bodyForceFromLoads_ = true;
+  for (int i = 0; i < 3; ++i) loadedBodyForce_(i) += factor * load.values[i] * bodyForce_(i);
+}
+
+void StdBrick::zeroLoad() {
+  loadedBodyForce_.setZero();
+  bodyForceFromLoads_ = false;
 }
 
 Vector StdBrick::stressesAsVector() const {
@@ -233,9 +243,10 @@ Response StdBrick::setResponse(const std::vector<std::string>& args) {
   if (what == "strains" || what == "strain")
     return {perGaussPoint(kStrainNames), [this] { return strainsAsVector(); }};
   if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    // OpenSees' names for the brick: P<dof>_<node>.
     std::vector<std::string> names;
     for (int a = 1; a <= kNodes; ++a)
-      for (const char* c : {"Px_", "Py_", "Pz_"}) names.push_back(c + std::to_string(a));
+      for (const char* c : {"P1_", "P2_", "P3_"}) names.push_back(c + std::to_string(a));
     return {names, [this] { return Vector(resistingForce()); }};
   }
   if ((what == "material" || what == "integrPoint") && args.size() >= 2) {

@@ -17,8 +17,14 @@ namespace beamsolid {
 // the density): the OpenSees manual calls them "body forces in global x, y,
 // z directions", which is what they are added as. They act in full at every
 // step, independent of load patterns: resistingForce = internal force -
-// integral(N^T b dV). eleLoad '-selfWeight' (bx, by, bz) loads are instead
-// accelerations: scaled by the pattern factor and multiplied by the density.
+// integral(N^T b dV).
+//
+// eleLoad '-selfWeight' (fx, fy, fz) does what it does in OpenSees (checked
+// against OpenSeesPy 3.7.1): while such loads are active, the body force is
+// sum over them of factor * (fx b1, fy b2, fz b3) and b itself no longer acts.
+// The values scale the element's own b, component by component; the density
+// plays no part. So element(..., b1, b2, b3) plus eleLoad '-selfWeight' 1 1 1
+// in a Linear pattern ramps the self weight up with the load factor.
 class StdBrick : public Element {
  public:
   static constexpr int kNodes = 8;
@@ -47,11 +53,12 @@ class StdBrick : public Element {
   void revertToLastCommit() override;
   void revertToStart() override;
 
-  void zeroLoad() override { selfWeight_.setZero(); }
+  void zeroLoad() override;
   void addLoad(const ElementLoad& load, double factor) override;
   bool acceptsLoad(ElementLoad::Type type) const override { return type == ElementLoad::Type::SelfWeight; }
 
-  // 'stresses'/'stress', 'strains'/'strain' (8 Gauss points x 6),
+  // 'stresses'/'stress', 'strains'/'strain' (8 Gauss points x 6, OpenSees' point
+  // order: xi slowest, zeta fastest),
   // 'force'/'forces'/'globalForce' (24), 'material' i ... (i = 1..8).
   Response setResponse(const std::vector<std::string>& args) override;
   // Forwarded to every Gauss point material; true when any accepted it.
@@ -78,8 +85,10 @@ class StdBrick : public Element {
 
   std::array<std::unique_ptr<NDMaterial>, kGaussPoints> materials_;
   Vector3 bodyForce_;
-  // Accumulated -selfWeight accelerations (factor * {bx, by, bz}) of the current time.
-  Vector3 selfWeight_ = Vector3::Zero();
+  // Body force from the active -selfWeight loads, sum of factor * (f .* b),
+  // which replaces bodyForce_ while any such load is active.
+  Vector3 loadedBodyForce_ = Vector3::Zero();
+  bool bodyForceFromLoads_ = false;
 
   // Reference geometry, fixed once the nodes are known.
   std::array<ShapeGradients, kGaussPoints> gradients_;

@@ -118,18 +118,37 @@ Response Truss::setResponse(const std::vector<std::string>& args) {
   if (what == "axialForce" || what == "basicForce" || what == "basicForces")
     return {{"N"}, [this] { return Vector::Constant(1, axialForce()); }};
   if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    // OpenSees' names: P<node>_<dof>.
     std::vector<std::string> names;
-    const char* const labels[6] = {"Px_", "Py_", "Pz_", "Mx_", "My_", "Mz_"};
     for (int a = 0; a < 2; ++a)
-      for (int k = 0; k < nodes()[a]->ndf(); ++k) names.push_back(labels[k] + std::to_string(a + 1));
+      for (int k = 0; k < nodes()[a]->ndf(); ++k) {
+        std::string name = "P";  // built in steps: GCC 12 misreports a chain of + (-Wrestrict)
+        name += std::to_string(a + 1);
+        name += '_';
+        name += std::to_string(k + 1);
+        names.push_back(std::move(name));
+      }
     return {names, [this] { return Vector(resistingForce()); }};
   }
-  if (what == "localForce" || what == "localForces")
-    return {{"N_1", "N_2"}, [this] {
-              Vector v(2);
-              v << -axialForce(), axialForce();
+  if (what == "localForce" || what == "localForces") {
+    // OpenSees' layouts: the truss gives end forces in local axes, ndf per
+    // node with only the axial ones non-zero (-N at i, +N at j); the
+    // corotational truss gives the axial force alone.
+    if (largeDisplacement()) return {{"N"}, [this] { return Vector::Constant(1, axialForce()); }};
+    const int ndf = nodes()[0]->ndf();
+    std::vector<std::string> names;
+    const char* const labels[6] = {"N_", "Vy_", "Vz_", "T_", "My_", "Mz_"};
+    for (int a = 1; a <= 2; ++a)
+      for (int k = 0; k < ndf; ++k) names.push_back(labels[k] + std::to_string(a));
+    return {names, [this, ndf] {
+              Vector v = Vector::Zero(2 * ndf);
+              v[0] = -axialForce();
+              v[ndf] = axialForce();
               return v;
             }};
+  }
+  if ((what == "basicStiffness") && !largeDisplacement())
+    return {{"k"}, [this] { return Vector::Constant(1, area_ * material_->tangent() / initialLength_); }};
   if (what == "basicDeformation" || what == "basicDeformations" || what == "deformation" ||
       what == "deformations")
     return {{"U"}, [this] { return Vector::Constant(1, elongation()); }};

@@ -45,8 +45,10 @@ class Truss : public Element {
   void revertToLastCommit() override { material_->revertToLastCommit(); }
   void revertToStart() override { material_->revertToStart(); }
 
-  // 'axialForce' (1), 'force'/'globalForce' (numDOF), 'localForce' (2),
-  // 'basicDeformation'/'deformation' (1: elongation), 'material' ... forwarded.
+  // 'axialForce' (1), 'force'/'globalForce' (numDOF), 'localForce' (truss:
+  // numDOF, local axes, only -N and +N non-zero; corotTruss: N alone),
+  // 'basicStiffness' (truss: A E_t / L), 'basicDeformation'/'deformation'
+  // (1: elongation), 'material' ... forwarded.
   Response setResponse(const std::vector<std::string>& args) override;
   bool setParameter(const std::vector<std::string>& args, double value) override;
 

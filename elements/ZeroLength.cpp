@@ -131,17 +131,38 @@ Response ZeroLength::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
   const std::string& what = args[0];
   if (what == "force" || what == "forces" || what == "globalForce" || what == "globalForces") {
+    // OpenSees' names: P<node>_<dof>, and P<spring> for the spring forces.
     std::vector<std::string> names;
-    const char* const labels[6] = {"Px_", "Py_", "Pz_", "Mx_", "My_", "Mz_"};
     for (int a = 0; a < 2; ++a)
-      for (int k = 0; k < nodes()[a]->ndf(); ++k) names.push_back(labels[k] + std::to_string(a + 1));
+      for (int k = 0; k < nodes()[a]->ndf(); ++k) {
+        std::string name = "P";  // built in steps: GCC 12 misreports a chain of + (-Wrestrict)
+        name += std::to_string(a + 1);
+        name += '_';
+        name += std::to_string(k + 1);
+        names.push_back(std::move(name));
+      }
     return {names, [this] { return Vector(resistingForce()); }};
   }
   if (what == "basicForce" || what == "basicForces" || what == "localForce" || what == "localForces")
-    return {Response::numberedNames("f", numSprings()), [this] { return springForces(); }};
+    return {Response::numberedNames("P", numSprings()), [this] { return springForces(); }};
   if (what == "deformation" || what == "deformations" || what == "basicDeformation" ||
       what == "basicDeformations")
     return {Response::numberedNames("e", numSprings()), [this] { return springDeformations(); }};
+  if (what == "basicStiffness") {
+    // n x n (one row per spring, row by row), the springs' tangents on the diagonal.
+    const int n = numSprings();
+    return {Response::numberedNames("k", n * n), [this, n] {
+              Vector v = Vector::Zero(n * n);
+              for (int k = 0; k < n; ++k) v[k * n + k] = springs_[k].material->tangent();
+              return v;
+            }};
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string name(1, "xyz"[axis]);
+    if (what == name + "axis" || what == name + "local")
+      return {{name + "_X", name + "_Y", name + "_Z"},
+              [this, axis] { return Vector(localAxes_.row(axis).transpose()); }};
+  }
   if (what == "material" && args.size() >= 2) {
     int k = 0;
     const std::string& s = args[1];

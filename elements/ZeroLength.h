@@ -37,6 +37,7 @@ class ZeroLength : public Element {
 
   // 'force'/'globalForce' (numDOF), 'basicForce'/'localForce' (one per spring),
   // 'deformation'/'deformations'/'basicDeformation' (one per spring),
+  // 'basicStiffness' (n x n, row by row), 'xaxis'/'yaxis'/'zaxis' (local axes),
   // 'material' k ... forwarded to spring k (1-based).
   Response setResponse(const std::vector<std::string>& args) override;
   bool setParameter(const std::vector<std::string>& args, double value) override;

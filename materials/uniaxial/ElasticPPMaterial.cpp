@@ -1,5 +1,9 @@
 #include "materials/uniaxial/ElasticPPMaterial.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Registry.h"
@@ -21,13 +25,19 @@ void ElasticPPMaterial::setTrialStrain(double strain, double) {
   const double fyP = E_ * epsyP_;
   const double fyN = E_ * epsyN_;
   // Elastic predictor from the committed plastic strain, then return to the
-  // yield stress if it is exceeded (the plastic strain absorbs the excess).
+  // yield stress if it is reached (the plastic strain absorbs the excess).
   const double elasticStress = E_ * (strain - eps0_ - committedPlasticStrain_);
-  if (elasticStress > fyP) {
+  // A predictor on the yield surface, to round-off, is plastic (tangent 0),
+  // as in OpenSees: a bar that yielded in the last step starts the next one
+  // with zero stiffness, which is what keeps Newton's iteration counts and
+  // ModifiedNewton's convergence the same as OpenSees'.
+  const double roundOff = 8.0 * std::numeric_limits<double>::epsilon() * E_ *
+                          std::max({std::fabs(strain - eps0_), epsyP_, -epsyN_});
+  if (elasticStress >= fyP - roundOff) {
     trialStress_ = fyP;
     trialPlasticStrain_ = strain - eps0_ - fyP / E_;
     trialTangent_ = 0.0;
-  } else if (elasticStress < fyN) {
+  } else if (elasticStress <= fyN + roundOff) {
     trialStress_ = fyN;
     trialPlasticStrain_ = strain - eps0_ - fyN / E_;
     trialTangent_ = 0.0;

@@ -5,11 +5,12 @@ namespace beamsolid {
 Response UniaxialMaterial::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
   const std::string& what = args[0];
-  if (what == "stress") return {{"stress"}, [this] { return Vector::Constant(1, stress()); }};
-  if (what == "strain") return {{"strain"}, [this] { return Vector::Constant(1, strain()); }};
-  if (what == "tangent") return {{"tangent"}, [this] { return Vector::Constant(1, tangent()); }};
+  // Component names as OpenSees writes them in XML recorder headers.
+  if (what == "stress") return {{"sigma11"}, [this] { return Vector::Constant(1, stress()); }};
+  if (what == "strain") return {{"eps11"}, [this] { return Vector::Constant(1, strain()); }};
+  if (what == "tangent") return {{"C11"}, [this] { return Vector::Constant(1, tangent()); }};
   if (what == "stressStrain" || what == "stressANDstrain")
-    return {{"stress", "strain"}, [this] {
+    return {{"sig11", "eps11"}, [this] {
               Vector v(2);
               v << stress(), strain();
               return v;

@@ -413,9 +413,11 @@ TEST(ElasticBeam3d, ResponsesOfCantileverEqualStatics) {
   EXPECT_FALSE(m.beam->setResponse({}));
 }
 
-// Under P-Delta the local end forces include the chord shear, so they still
-// balance the node: the top element's local shear equals the applied H.
-TEST(ElasticBeam3d, PDeltaLocalForceBalancesTheNode) {
+// Under P-Delta, 'localForce' is OpenSees': end shears (Mi + Mj)/L from the
+// basic forces only, without the chord shear N*dv/L (checked against
+// OpenSeesPy 3.7.1, tests/python/oracle_scripts/cantilever3d.py). The global
+// 'force' includes it and balances the node. Tolerance 1e-10 relative.
+TEST(ElasticBeam3d, PDeltaLocalForceLeavesTheChordShearOut) {
   // P well below the critical load (EI = 40: Pcr = pi^2 EI / 4L^2 = 6.2).
   const double L = 4.0, P = 2.0, H = 2.0;
   Domain d;
@@ -428,13 +430,18 @@ TEST(ElasticBeam3d, PDeltaLocalForceBalancesTheNode) {
   model.addLoad(f, 2, stack(Vector3(H, 0, -P), Vector3::Zero()));
   ASSERT_GE(model.solve(f), 0);
   const Vector local = beam.setResponse({"localForce"}).value();
-  // local x = Z, z = X: N_2 = -P, Vz_2 = H.
-  EXPECT_NEAR(local[6], -P, 1e-10 * P);
-  EXPECT_NEAR(local[8], H, 1e-10 * H);
-  // The base moment about local y (= -Y) carries P times the sway: H L + P delta.
   const double sway = d.node(2, "t").trialDisp()[0];
   ASSERT_GT(sway, 0.0);
+  // local x = Z, z = X: N_2 = -P; the base moment about local y (= -Y) is
+  // H L + P sway, and the shear is that moment over L.
+  EXPECT_NEAR(local[6], -P, 1e-10 * P);
   EXPECT_NEAR(local[4], H * L + P * sway, 1e-10 * H * L);
+  EXPECT_NEAR(local[8], H + P * sway / L, 1e-10 * H);
+  EXPECT_NEAR(local[2], -(H + P * sway / L), 1e-10 * H);
+  // The global force adds the chord shear -P sway / L and balances H.
+  const Vector global = beam.setResponse({"force"}).value();
+  EXPECT_NEAR(global[6], H, 1e-10 * H);
+  EXPECT_NEAR(global[8], -P, 1e-10 * P);
 }
 
 // Mass: lumped m L/2 per node on translations; consistent mass is exact for

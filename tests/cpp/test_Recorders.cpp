@@ -366,7 +366,7 @@ XmlSummary checkXml(const std::string& text) {
       continue;
     }
     const bool selfClosing = tag.back() == '/';
-    const std::string name = tag.substr(0, tag.find_first_of(" /"));
+    const std::string name = tag.substr(0, tag.find_first_of(" \t\r\n/"));
     if (stack.empty()) out.root = name;
     if (name == "NodeOutput" || name == "ElementOutput" || name == "TimeOutput") out.blocks.push_back(tag);
     const std::size_t next = text.find('<', contentStart);
@@ -608,10 +608,51 @@ TEST_F(RecorderTest, XmlHasHeaderBlocksAndClosedDataBlock) {
 
   const XmlSummary xe = checkXml(slurp(file("force.xml")));
   ASSERT_EQ(xe.blocks.size(), 1u);
-  EXPECT_EQ(xe.blocks[0].rfind("ElementOutput eleTag=\"7\" eleType=\"ProbeElement\" node1=\"1\" node2=\"2\"", 0), 0u)
+  EXPECT_EQ(xe.blocks[0].rfind("ElementOutput eleType=\"ProbeElement\" eleTag=\"7\" node1=\"1\" node2=\"2\"", 0), 0u)
       << xe.blocks[0];
   EXPECT_EQ(xe.responseTypes, (std::vector<std::string>{"N", "M"}));
   EXPECT_EQ(parseRows(xe.data, ' ').size(), 3u);
+}
+
+TEST_F(RecorderTest, XmlLayoutIsOpenSeesToTheByte) {
+  // The layout OpenSeesPy 3.7.1 writes (tests/python/oracle_scripts compares
+  // whole files): schema attributes on the root, four spaces per level,
+  // coordinates at the recorder's precision, data rows indented by eight with
+  // a blank after every value; envelopes name the node only and put a time
+  // block before each response type.
+  const std::string f = file("exact.xml"), fe = file("envelope.xml");
+  add("Node", {s("-xml"), s(f), s("-time"), s("-precision"), 3LL, s("-node"), 3LL, s("-dof"), 1LL, 2LL, s("disp")});
+  add("EnvelopeNode", {s("-xml"), s(fe), s("-time"), s("-node"), 3LL, s("-dof"), 2LL, s("disp")});
+  Vector u = Vector::Zero(6);
+  u << 0.123456, -2.5e-5, 0.0, 0.0, 0.0, 0.0;
+  domain_->node(3, "test").setTrialDisp(u);
+  domain_->record();
+  domain_->removeRecorders();
+  const std::string header =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      " <OpenSees\n"
+      "  xmlns:xsi = \"http://www.w3.org/2001/XMLSchema-instance\"\n"
+      "  xsi:noNamespaceSchemaLocation = \"http://OpenSees.berkeley.edu/xml-schema/xmlns/OpenSees.xsd\">\n";
+  EXPECT_EQ(slurp(f), header +
+                          "    <TimeOutput>\n"
+                          "        <ResponseType>time</ResponseType>\n"
+                          "    </TimeOutput>\n"
+                          "    <NodeOutput nodeTag=\"3\" coord1=\"2\" coord2=\"0.5\" coord3=\"-1\">\n"
+                          "        <ResponseType>D1</ResponseType>\n"
+                          "        <ResponseType>D2</ResponseType>\n"
+                          "    </NodeOutput>\n"
+                          "    <Data>\n"
+                          "        0 0.123 -2.5e-05 \n"
+                          "        </Data>\n"
+                          "</OpenSees>\n");
+  const std::string envelope = slurp(fe);
+  EXPECT_EQ(envelope.substr(0, envelope.find("    <Data>")), header +
+                                                                "    <NodeOutput nodeTag=\"3\">\n"
+                                                                "        <TimeOutput>\n"
+                                                                "            <ResponseType>time</ResponseType>\n"
+                                                                "        </TimeOutput>\n"
+                                                                "        <ResponseType>D2</ResponseType>\n"
+                                                                "    </NodeOutput>\n");
 }
 
 TEST_F(RecorderTest, BinaryRowsAreNativeDoublesAndNewline) {
@@ -730,6 +771,22 @@ TEST_F(RecorderTest, PrecisionOptionSetsSignificantDigits) {
   };
   EXPECT_EQ(maxSignificantDigits(slurp(f6)), 6u);
   EXPECT_EQ(maxSignificantDigits(slurp(f12)), 12u);
+}
+
+TEST_F(RecorderTest, ScientificWritesPrecisionDigitsAfterThePoint) {
+  // OpenSees' -scientific: %.pe with p = -precision (default 6), so p + 1
+  // significant digits (checked against OpenSeesPy 3.7.1).
+  const std::string f6 = file("sci6.out"), f3 = file("sci3.out");
+  add("Node", {s("-file"), s(f6), s("-scientific"), s("-node"), 3LL, s("-dof"), 1LL, 2LL, 3LL, s("disp")});
+  add("Node", {s("-file"), s(f3), s("-precision"), 3LL, s("-scientific"), s("-node"), 3LL, s("-dof"), 1LL, 2LL, 3LL,
+               s("disp")});
+  Vector u = Vector::Zero(6);
+  u << 0.1, -98765.4321, 0.0, 0.0, 0.0, 0.0;
+  domain_->node(3, "test").setTrialDisp(u);
+  domain_->record();
+  domain_->removeRecorders();
+  EXPECT_EQ(slurp(f6), "1.000000e-01 -9.876543e+04 0.000000e+00\n");
+  EXPECT_EQ(slurp(f3), "1.000e-01 -9.877e+04 0.000e+00\n");
 }
 
 TEST_F(RecorderTest, RemovedElementRecordsZeros) {

@@ -308,18 +308,23 @@ TEST(StdBrick, ColumnUnderBodyForceHasBaseReactionEqualToWeight) {
   EXPECT_LT(d.node(block.node(0, 0, 5), "test").trialDisp()(2), 0.0);
 }
 
-TEST(StdBrick, SelfWeightLoadScalesWithPatternFactorAndDensity) {
-  // eleLoad -selfWeight (0, 0, -g) through a load pattern: body force
-  // rho * g * factor per unit volume, removed again by zeroLoad.
-  const double rho = 1.9, g = 9.81, scale = 0.5;
+TEST(StdBrick, SelfWeightLoadsScaleTheElementBodyForce) {
+  // OpenSees semantics (checked against OpenSeesPy 3.7.1): while eleLoad
+  // -selfWeight loads are active the body force is sum factor * (f .* b),
+  // replacing the element's b; the density plays no part. Two loads f1, f2
+  // in a pattern with factor 1/2: base reaction -(f1 + f2) .* b V / 2, to
+  // round-off (1e-12 relative). zeroLoad brings b back.
+  const Vector3 b(0.4, -0.3, -18.0), f1(1.0, 1.0, 1.0), f2(0.0, 2.0, 3.0);
+  const double scale = 0.5, volume = 0.5 * 0.4 * 2.0;
   Domain d;
-  addNDMaterial(d, "ElasticIsotropic", 1, 2e4, 0.3, rho);
+  addNDMaterial(d, "ElasticIsotropic", 1, 2e4, 0.3, 1.9);
   BrickBlock block{{0.0, 0.5}, {0.0, 0.4}, {0.0, 1.0, 2.0}};
-  block.build(d, 1);
+  block.build(d, 1, b);
   auto pattern = std::make_unique<LoadPattern>(1, std::make_shared<ConstantSeries>(1), scale);
   for (const auto& [tag, e] : d.elements()) {
     ASSERT_TRUE(e->acceptsLoad(ElementLoad::Type::SelfWeight));
-    pattern->addElementLoad(tag, ElementLoad{ElementLoad::Type::SelfWeight, {0.0, 0.0, -g}});
+    pattern->addElementLoad(tag, ElementLoad{ElementLoad::Type::SelfWeight, {f1(0), f1(1), f1(2)}});
+    pattern->addElementLoad(tag, ElementLoad{ElementLoad::Type::SelfWeight, {f2(0), f2(1), f2(2)}});
   }
   d.addPattern(std::move(pattern), "test");
   d.applyLoad(0.0);
@@ -327,24 +332,37 @@ TEST(StdBrick, SelfWeightLoadScalesWithPatternFactorAndDensity) {
   DenseStatics statics(d);
   for (int j = 0; j <= 1; ++j)
     for (int i = 0; i <= 1; ++i) statics.fixAll(block.node(i, j, 0));
-  const double weight = rho * g * scale * 0.5 * 0.4 * 2.0;
-  ASSERT_GE(statics.solve(1e-12 * weight), 0);
+  const Vector3 expected = -scale * (f1 + f2).cwiseProduct(b) * volume;
+  ASSERT_GE(statics.solve(1e-12 * expected.norm()), 0);
   d.calculateReactions();
-  double vertical = 0.0;
+  Vector3 reaction = Vector3::Zero();
   for (int j = 0; j <= 1; ++j)
-    for (int i = 0; i <= 1; ++i) vertical += d.node(block.node(i, j, 0), "test").reaction()(2);
-  EXPECT_NEAR(vertical, weight, 1e-12 * weight);
+    for (int i = 0; i <= 1; ++i) reaction += d.node(block.node(i, j, 0), "test").reaction();
+  EXPECT_LE((reaction - expected).norm(), 1e-12 * expected.norm());
 
+  // Without the loads the element's own b acts again: -integral(N b dV) in
+  // the resisting force at zero displacement.
   for (const auto& [tag, e] : d.elements()) e->zeroLoad();
-  d.update();
-  Matrix K;
-  Vector R;
   for (const auto& [tag, n] : d.nodes()) n->setTrialDisp(Vector::Zero(3));
   d.update();
-  statics.assemble(K, R);
-  EXPECT_EQ(R.cwiseAbs().maxCoeff(), 0.0);
+  Vector3 total = Vector3::Zero();
+  for (const auto& [tag, e] : d.elements()) {
+    const Vector R = e->resistingForce();
+    for (int a = 0; a < 8; ++a) total += R.segment<3>(3 * a);
+  }
+  EXPECT_LE((total + b * volume).norm(), 1e-12 * b.norm() * volume);
   EXPECT_THROW(d.findElement(1)->addLoad(ElementLoad{ElementLoad::Type::BeamUniform, {1.0, 0.0, 0.0}}, 1.0),
                OpenSeesError);
+}
+
+TEST(StdBrick, SelfWeightLoadAtFactorZeroSwitchesTheBodyForceOff) {
+  // An active -selfWeight load with factor 0 leaves no body force at all.
+  Domain d;
+  addDistortedBrick(d, Vector3(1.0, -2.0, -9.0));
+  Element& e = *d.findElement(1);
+  e.zeroLoad();
+  e.addLoad(ElementLoad{ElementLoad::Type::SelfWeight, {1.0, 1.0, 1.0}}, 0.0);
+  EXPECT_EQ(Vector(e.resistingForce()).cwiseAbs().maxCoeff(), 0.0);
 }
 
 TEST(StdBrick, BodyForceActsWithoutLoadPatterns) {
@@ -395,6 +413,35 @@ TEST(StdBrick, ResponsesAndMaterialForwarding) {
   EXPECT_FALSE(e.setResponse({"material", "9", "stress"}));
   EXPECT_FALSE(e.setResponse({"material", "x"}));
   EXPECT_FALSE(e.setResponse({"nonsense"}));
+}
+
+TEST(StdBrick, GaussPointsAreNumberedAsInOpenSees) {
+  // OpenSees numbers the 2x2x2 points with xi slowest and zeta fastest:
+  // (-,-,-), (-,-,+), (-,+,-), (-,+,+), (+,-,-), ... (checked against
+  // OpenSeesPy 3.7.1, tests/python/oracle_scripts). On the box
+  // [0,2]x[0,3]x[0,5] point g sits at the centre plus (sx, sy, sz) times the
+  // half sides over sqrt(3), to round-off.
+  Domain d;
+  addNDMaterial(d, "ElasticIsotropic", 1, 1000.0, 0.3, 2.0);
+  BrickBlock block{{0.0, 2.0}, {0.0, 3.0}, {0.0, 5.0}};
+  block.build(d, 1);
+  const StdBrick& e = brick(d, 1);
+  const Vector3 centre(1.0, 1.5, 2.5), half(1.0, 1.5, 2.5);
+  for (int g = 0; g < StdBrick::kGaussPoints; ++g) {
+    const Vector3 sign(g & 4 ? 1.0 : -1.0, g & 2 ? 1.0 : -1.0, g & 1 ? 1.0 : -1.0);
+    const Vector3 expected = centre + sign.cwiseProduct(half) / std::sqrt(3.0);
+    EXPECT_LE((e.gaussPointCoordinates(g) - expected).norm(), 1e-14) << "Gauss point " << g + 1;
+  }
+  // The 'material' index and the 'stresses' blocks follow the same order.
+  for (const auto& [tag, n] : d.nodes()) n->setTrialDisp(Vector3(1e-3 * n->crd()(2) * n->crd()(0), 0.0, 0.0));
+  d.findElement(1)->update();
+  Element& element = *d.findElement(1);
+  const Vector stresses = element.setResponse({"stresses"}).value();
+  for (int g = 0; g < StdBrick::kGaussPoints; ++g) {
+    const Vector s = element.setResponse({"material", std::to_string(g + 1), "stress"}).value();
+    EXPECT_EQ(s, Vector(stresses.segment<6>(6 * g)));
+    EXPECT_EQ(s, Vector(e.material(g).stress()));
+  }
 }
 
 TEST(StdBrick, CommitAndRevertFollowTheMaterials) {

@@ -198,11 +198,11 @@ TEST(Truss, ElasticPPBarYieldsAtAEEpsyP) {
   struct Step { double strain, axialForce, tangent; };
   const Step steps[] = {
       {0.001, 4.0, 2e5},    // elastic
-      {0.002, 8.0, 2e5},    // exactly at the yield stress: still elastic
+      {0.002, 8.0, 0.0},    // exactly at the yield stress: plastic, as in OpenSees
       {0.003, 8.0, 0.0},    // yields: plastic strain 0.001
       {0.004, 8.0, 0.0},    // plastic strain 0.002
       {0.003, 4.0, 2e5},    // elastic unloading: E*(0.003 - 0.002) = 200
-      {0.0, -8.0, 2e5},     // E*(0 - 0.002) = -400: at the compressive yield stress
+      {0.0, -8.0, 0.0},     // E*(0 - 0.002) = -400: on the compressive yield stress, plastic
       {-0.001, -8.0, 0.0},  // yields in compression: plastic strain 0.001
   };
   auto pull = [&](double strain) {

@@ -156,6 +156,35 @@ TEST(ElasticPPMaterial, DefaultsAndInitialStrain) {
   EXPECT_NEAR(m->stress(), -2.0, 1e-12);
 }
 
+TEST(ElasticPPMaterial, AStateOnTheYieldSurfaceIsPlastic) {
+  // As in OpenSees (checked with OpenSeesPy 3.7.1's testUniaxialMaterial):
+  // the yield strain itself gives the yield stress with tangent 0, and after
+  // a committed yield the same strain again (the start of the next step)
+  // stays plastic. Just inside the surface it is elastic.
+  auto m = build("ElasticPP", args("uniaxialMaterial", 1, 200e3, 0.002));
+  m->setTrialStrain(0.0019999999);
+  EXPECT_DOUBLE_EQ(m->tangent(), 200e3);
+  m->setTrialStrain(0.002);
+  EXPECT_DOUBLE_EQ(m->stress(), 400.0);
+  EXPECT_DOUBLE_EQ(m->tangent(), 0.0);
+  // Strains whose predictor lands on the surface only up to round-off.
+  for (double strain : {0.003, 0.0030000000000000001, 0.1 / 3.0, 0.7}) {
+    auto n = build("ElasticPP", args("uniaxialMaterial", 2, 200e3, 0.002));
+    n->setTrialStrain(strain);
+    n->commitState();
+    n->setTrialStrain(strain);
+    EXPECT_NEAR(n->stress(), 400.0, 1e-9) << strain;
+    EXPECT_DOUBLE_EQ(n->tangent(), 0.0) << strain;
+    n->setTrialStrain(-strain);
+    n->commitState();
+    n->setTrialStrain(-strain);
+    EXPECT_NEAR(n->stress(), -400.0, 1e-9) << strain;
+    EXPECT_DOUBLE_EQ(n->tangent(), 0.0) << strain;
+    n->setTrialStrain(-strain + 1e-6);  // unloading is elastic
+    EXPECT_DOUBLE_EQ(n->tangent(), 200e3) << strain;
+  }
+}
+
 TEST(ElasticPPMaterial, TrialsWithinAStepDoNotAccumulatePlasticStrain) {
   auto m = build("ElasticPP", args("uniaxialMaterial", 1, 200.0, 0.01));
   m->setTrialStrain(0.03);  // would leave plastic strain 0.02 if committed

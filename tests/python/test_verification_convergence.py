@@ -71,7 +71,7 @@ def two_steps(m):
     assert m.analyze(1) == 0
     w1 = -m.nodeDisp(3, 3)
     assert m.analyze(1) == 0
-    norms = m.testNorm()
+    norms = m.testNorm()[: m.testIter()]  # padded with zeros to maxIter, as OpenSees
     assert m.testIter() == len(norms)
     w2 = -m.nodeDisp(3, 3)
     assert w1 == pytest.approx(exact_deflection(0.5 * P_REF), rel=1e-10)
@@ -130,7 +130,7 @@ def test_newton_first_correction_and_unbalance_norms(model):
     assert model.analyze(1) == 0
     w1 = -model.nodeDisp(3, 3)
     assert model.analyze(1) == 0
-    norms = model.testNorm()
+    norms = model.testNorm()[: model.testIter()]  # padded with zeros to maxIter, as OpenSees
     w_first = w1 + (P_REF - load(w1)) / stiffness(w1)
     assert norms[0] == pytest.approx(abs(P_REF - load(w_first)), rel=1e-8)
     assert norms[-1] <= 1e-10 < norms[-2]

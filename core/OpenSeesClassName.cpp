@@ -1,0 +1,19 @@
+#include "core/OpenSeesClassName.h"
+
+#include <map>
+
+namespace beamsolid {
+
+std::string openSeesClassName(const std::string& elementClassName) {
+  static const std::map<std::string, std::string> table = {
+      {"elasticBeamColumn", "ElasticBeam3d"},   {"truss", "Truss"},
+      {"corotTruss", "CorotTruss"},             {"zeroLength", "ZeroLength"},
+      {"stdBrick", "Brick"},                    {"bbarBrick", "BbarBrick"},
+      {"dispBeamColumn", "DispBeamColumn3d"},   {"forceBeamColumn", "ForceBeamColumn3d"},
+      {"nonlinearBeamColumn", "ForceBeamColumn3d"},
+  };
+  const auto it = table.find(elementClassName);
+  return it == table.end() ? elementClassName : it->second;
+}
+
+}  // namespace beamsolid

@@ -1,0 +1,21 @@
+"""Plain OpenSeesPy scripts run by both BeamSolid and OpenSeesPy.
+
+Each module exposes ``run(ops) -> dict`` and uses nothing but the ``ops``
+commands it is given, so the same code runs with
+``import openseespy.opensees as ops`` and ``import beamsolid.opensees as ops``.
+Recorder files are written to the current directory (the runner gives each
+script its own).
+"""
+
+SCRIPTS = (
+    "cantilever3d",
+    "brick_block",
+    "truss_plastic",
+    "zerolength_orient",
+    "recorders_text",
+    "element_responses",
+    "command_behaviour",
+    "staged_constraints",
+    "mixed_pile",
+    "response_names",
+)

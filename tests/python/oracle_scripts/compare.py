@@ -1,0 +1,300 @@
+"""Running the oracle scripts with both implementations and comparing results.
+
+Used by tests/python/test_opensees_oracle.py and benchmarks/opensees_oracle.py.
+
+Numbers are compared entry by entry (an entry is one key of a script's result
+dict: a number, a list, a list of lists) against the entry's scale, the
+largest magnitude in the OpenSeesPy value: |a - b| <= rtol * scale. Round-off
+noise (1e-13 where the other side has 0) is judged against the entry's scale,
+not its own size. Integers (iteration counts, return codes, tags) and strings
+must be equal; recorder files are compared line by line and token by token.
+"""
+import fnmatch
+import importlib
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_ORACLE_PYTHON = "/work/oracle-venv/bin/python"
+
+# Relative tolerance (against the entry's scale) by key pattern; the first
+# matching pattern wins. Linear answers: 1e-8. Converged nonlinear answers
+# (tests at 1e-12): also 1e-8. Iteration norms: the last norms of a step are
+# round-off, so they are compared against the step's first norm.
+TOLERANCES = (
+    ("*testNorm*", 1e-6),
+    # Penalty constraints (alpha 1e12) converged to NormDispIncr 1e-9: the
+    # conditioning leaves ~1e-8 of round-off in the converged state.
+    ("Penalty.*", 1e-6),
+    ("*", 1e-8),
+)
+
+
+# (script, key pattern) -> why BeamSolid differs on purpose.
+KNOWN_DIFFERENCES = {
+    ("command_behaviour", "eleResponse unknown"):
+        "BeamSolid raises OpenSeesError naming the element and the response; OpenSeesPy returns []",
+    ("command_behaviour", "eleResponse missing element"):
+        "BeamSolid raises OpenSeesError (element does not exist); OpenSeesPy returns []",
+    ("command_behaviour", "sp Plain: *"):
+        "constraints('Plain') in OpenSees ignores the value of an sp (warns, imposes 0); "
+        "BeamSolid's Plain handler imposes it (docs/commands.md)",
+    ("response_names", "stdBrick st*"):
+        "stdBrick stresses/strains: BeamSolid suffixes the Gauss point (sigma11_1 ... sigma13_8) so that "
+        "sidecar columns are unique; OpenSees repeats sigma11 ... sigma13 eight times",
+    ("response_names", "truss3 localForce"):
+        "OpenSees' truss localForce recorder writes 2*ndf values but no ResponseType names",
+    ("command_behaviour", "analyze singular from the start"):
+        "policy (docs/commands.md): BeamSolid raises, naming the dofs without stiffness, when the model is "
+        "singular before any step converged; OpenSees returns -3, so a script that checks the code and "
+        "retries stops with an exception in BeamSolid",
+    ("command_behaviour", "load with * values"):
+        "OpenSees accepts a load with the wrong number of values silently; BeamSolid raises naming the node's ndf",
+    ("command_behaviour", "remove sp of nothing"):
+        "OpenSees ignores remove('sp') of a dof without sp; BeamSolid raises",
+    ("command_behaviour", "remove sp of a pattern: next step"):
+        "remove('sp', node, dof) in OpenSees removes only a fix/domain sp; BeamSolid also removes the sp "
+        "a load pattern holds (Domain::removeSP)",
+    ("command_behaviour", "remove sp of a fix: next step"):
+        "singular after removing a fix: OpenSees analyze returns -1 (set-up failed), BeamSolid -3 (algorithm)",
+}
+
+
+def known_reason(script, key):
+    """Why (script, key) differs on purpose, or None."""
+    for (s, pattern), reason in KNOWN_DIFFERENCES.items():
+        if s == script and fnmatch.fnmatchcase(key, pattern):
+            return reason
+    return None
+
+
+def tolerance_for(key):
+    for pattern, rtol in TOLERANCES:
+        if fnmatch.fnmatchcase(key, pattern):
+            return rtol
+    return 1e-8
+
+
+def find_oracle_python():
+    """A Python where `import openseespy.opensees` works, or None."""
+    candidates = [os.environ.get("BEAMSOLID_ORACLE_PYTHON"), DEFAULT_ORACLE_PYTHON]
+    for python in candidates:
+        if not python or not os.path.exists(python):
+            continue
+        try:
+            probe = subprocess.run([python, "-c", "import openseespy.opensees"], capture_output=True, timeout=120)
+        except (OSError, subprocess.TimeoutExpired):
+            continue
+        if probe.returncode == 0:
+            return python
+    return None
+
+
+def run_opensees(python, names, workdir):
+    """Results of the scripts under OpenSeesPy, run in a subprocess."""
+    output = os.path.join(workdir, "opensees_results.json")
+    os.makedirs(workdir, exist_ok=True)
+    proc = subprocess.run(
+        [python, os.path.join(HERE, "oracle_runner.py"), os.path.join(workdir, "opensees"), output, *names],
+        capture_output=True, text=True, timeout=900,
+    )
+    try:
+        with open(output) as f:
+            results = json.load(f)
+    except (OSError, ValueError):
+        results = {}
+    for name in names:
+        if name not in results:
+            results[name] = {"__error__": f"OpenSeesPy run ended (code {proc.returncode}) before this script:\n"
+                                           + proc.stderr[-3000:]}
+    return results
+
+
+def run_beamsolid(names, workdir):
+    """Results of the scripts under beamsolid.opensees, in this process."""
+    import traceback
+
+    import beamsolid.opensees as ops
+
+    if HERE not in sys.path:
+        sys.path.insert(0, HERE)
+    results = {}
+    here = os.getcwd()
+    for name in names:
+        cwd = os.path.join(workdir, "beamsolid", name)
+        os.makedirs(cwd, exist_ok=True)
+        os.chdir(cwd)
+        try:
+            results[name] = importlib.import_module(name).run(ops)
+        except Exception:  # noqa: BLE001 - reported by the comparison
+            results[name] = {"__error__": traceback.format_exc()}
+        finally:
+            os.chdir(here)
+            try:
+                ops.wipe()
+            except Exception:  # noqa: BLE001
+                pass
+        # JSON round trip: both sides are compared in the same form.
+        results[name] = json.loads(json.dumps(results[name]))
+    return results
+
+
+# ---------------------------------------------------------------- comparison
+
+class Outcome:
+    """The comparison of one entry: ok, the largest relative difference, a note,
+    and a kind: "same", "differs", or one of the two documented policies for
+    response names: "raises" (BeamSolid raises where OpenSeesPy returns []
+    for a name it does not know) and "extra" (BeamSolid answers a name
+    OpenSeesPy does not know, e.g. a plural/singular alias)."""
+
+    def __init__(self, ok, rel=0.0, note="", kind=None):
+        self.ok, self.rel, self.note = ok, rel, note
+        self.kind = kind or ("same" if ok else "differs")
+
+    def __repr__(self):
+        return f"Outcome({self.kind}, rel={self.rel:.3g}, note={self.note!r})"
+
+
+def _flatten(value):
+    if isinstance(value, list):
+        for v in value:
+            yield from _flatten(v)
+    else:
+        yield value
+
+
+def _shape(value):
+    if isinstance(value, list):
+        return [_shape(v) for v in value]
+    if isinstance(value, bool):
+        return "bool"
+    if isinstance(value, int):
+        return "int"
+    if isinstance(value, float):
+        return "float"
+    return type(value).__name__
+
+
+def _is_number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def compare_values(key, bs, os_value):
+    """Compares one entry; os_value (OpenSeesPy) is the reference."""
+    if isinstance(os_value, dict) or isinstance(bs, dict):
+        if not (isinstance(os_value, dict) and isinstance(bs, dict)) or set(os_value) != set(bs):
+            return Outcome(False, math.inf, f"fields differ: BeamSolid {_brief(bs)} vs OpenSees {_brief(os_value)}")
+        parts = {k: compare_values(f"{key}.{k}", bs[k], os_value[k]) for k in sorted(os_value)}
+        bad = [f"{k}: {o.note}" for k, o in parts.items() if not o.ok]
+        return Outcome(not bad, max(o.rel for o in parts.values()), "; ".join(bad))
+    if os_value == "[]" and bs == "error":
+        return Outcome(True, 0.0, "OpenSeesPy returns [], BeamSolid raises", "raises")
+    if os_value == "[]" and isinstance(bs, list):
+        return Outcome(True, 0.0, f"only BeamSolid knows this name ({len(bs)} values)", "extra")
+    if isinstance(os_value, str) and isinstance(bs, str):
+        if key.startswith("file:") or key.endswith(".out") or ".recorder." in key:
+            return compare_recorder_text(bs, os_value)
+        return Outcome(bs == os_value, 0.0, "" if bs == os_value else f"{bs!r} != {os_value!r}")
+    if _shape(bs) != _shape(os_value):
+        # Integers are exact; 1 vs 1.0 is a type difference worth reporting.
+        return Outcome(False, math.inf, f"shape/type differs: BeamSolid {_brief(bs)} vs OpenSees {_brief(os_value)}")
+    flat_b, flat_o = list(_flatten(bs)), list(_flatten(os_value))
+    scale = max((abs(v) for v in flat_o if _is_number(v)), default=0.0)
+    rtol = tolerance_for(key)
+    worst = 0.0
+    if "testNorm" in key and all(isinstance(v, float) for v in flat_o):
+        # Iteration norms fall by orders of magnitude within a step: each is
+        # compared with its own size, down to a floor of 1e-9 of the largest
+        # norm of the entry, below which norms are round-off.
+        floor = 1e-9 * scale
+        for b, o in zip(flat_b, flat_o):
+            err = abs(b - o) / (max(abs(b), abs(o)) + floor / rtol) if b != o else 0.0
+            worst = max(worst, err)
+        return Outcome(worst <= rtol, worst, "" if worst <= rtol else f"norms differ by {worst:.3g} relative")
+    for b, o in zip(flat_b, flat_o):
+        if isinstance(o, int) and not isinstance(o, bool) and isinstance(b, int):
+            if b != o:
+                return Outcome(False, math.inf, f"integers differ: BeamSolid {_brief(bs)} vs OpenSees {_brief(os_value)}")
+        elif _is_number(o):
+            worst = max(worst, _rel(b, o, scale))
+        elif b != o:
+            return Outcome(False, math.inf, f"{b!r} != {o!r}")
+    ok = worst <= rtol
+    return Outcome(ok, worst, "" if ok else f"relative difference {worst:.3g} > {rtol:g}")
+
+
+def _rel(b, o, scale):
+    if b == o:
+        return 0.0
+    if not (math.isfinite(b) and math.isfinite(o)):
+        return math.inf
+    if scale == 0.0:
+        return math.inf
+    return abs(b - o) / scale
+
+
+def _brief(v, n=160):
+    s = json.dumps(v)
+    return s if len(s) <= n else s[: n - 3] + "..."
+
+
+_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^[-+]?(inf|nan)$")
+
+
+def compare_recorder_text(bs, os_text, rtol=2e-5):
+    """Recorder files: same lines and tokens; numbers equal to the printed
+    precision (relative to the line's largest value), and counts of
+    byte-identical lines and tokens in the note."""
+    b_lines, o_lines = bs.splitlines(keepends=True), os_text.splitlines(keepends=True)
+    if len(b_lines) != len(o_lines):
+        return Outcome(False, math.inf, f"{len(b_lines)} lines vs {len(o_lines)} in OpenSees")
+    same_lines = same_tokens = tokens = 0
+    worst = 0.0
+    for b_line, o_line in zip(b_lines, o_lines):
+        if b_line == o_line:
+            same_lines += 1
+        b_tok, o_tok = b_line.split(), o_line.split()
+        if len(b_tok) != len(o_tok):
+            return Outcome(False, math.inf, f"line {o_lines.index(o_line) + 1}: {len(b_tok)} values vs {len(o_tok)}")
+        if _layout(b_line) != _layout(o_line):
+            return Outcome(False, math.inf, f"delimiters differ: {b_line[:60]!r} vs {o_line[:60]!r}")
+        nums = [float(t) for t in o_tok if _NUMBER.match(t)]
+        scale = max((abs(v) for v in nums), default=0.0)
+        for bt, ot in zip(b_tok, o_tok):
+            tokens += 1
+            if bt == ot:
+                same_tokens += 1
+                continue
+            if not (_NUMBER.match(bt) and _NUMBER.match(ot)):
+                return Outcome(False, math.inf, f"token {bt!r} vs {ot!r}")
+            worst = max(worst, _rel(float(bt), float(ot), scale))
+    ok = worst <= rtol
+    note = f"{same_lines}/{len(o_lines)} lines and {same_tokens}/{tokens} values byte-identical"
+    if not ok:
+        note = f"values differ by {worst:.3g} of the line scale; " + note
+    return Outcome(ok, worst, note)
+
+
+def _layout(line):
+    """The line with every token replaced by 'x': delimiters and line end."""
+    return re.sub(r"[^ \t,\n\r]+", "x", line)
+
+
+def compare_script(bs_results, os_results):
+    """{key: Outcome} for every key of either side (missing keys fail)."""
+    outcomes = {}
+    for key in sorted(set(bs_results) | set(os_results)):
+        if key == "__error__":
+            outcomes[key] = Outcome(False, math.inf, "script raised: " + (bs_results.get(key) or os_results.get(key))[-600:])
+        elif key not in os_results:
+            outcomes[key] = Outcome(False, math.inf, "only BeamSolid has this entry")
+        elif key not in bs_results:
+            outcomes[key] = Outcome(False, math.inf, "only OpenSees has this entry")
+        else:
+            outcomes[key] = compare_values(key, bs_results[key], os_results[key])
+    return outcomes
