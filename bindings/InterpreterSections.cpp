@@ -17,18 +17,6 @@ using Result = Interpreter::Result;
 
 namespace {
 
-template <class Product, class Table>
-std::unique_ptr<Product> buildFromRegistry(CommandArgs& a, Domain& domain, const Table& table) {
-  const std::string type = a.nextString("type");
-  if (!table.has(type)) {
-    std::string known;
-    for (const auto& t : table.types()) known += (known.empty() ? "" : ", ") + t;
-    a.fail("type '" + type + "' is unknown (known: " + known + ")");
-  }
-  a.setContext(a.command() + " " + type);
-  return table.get(type)(a, domain);
-}
-
 FiberSection3d& currentFiberSection(const Domain& domain, int tag, const CommandArgs& a) {
   if (tag < 0) a.fail("no section to add fibers to: call section('Fiber', secTag, '-GJ', GJ) first");
   SectionForceDeformation* s = domain.sections.find(tag);
@@ -61,7 +49,7 @@ void addFibers(FiberSection3d& section, const UniaxialMaterial& material, const 
 }  // namespace
 
 Result Interpreter::section(CommandArgs& a) {
-  std::shared_ptr<SectionForceDeformation> s = buildFromRegistry<SectionForceDeformation>(a, *domain_, Registry::global().sections);
+  std::shared_ptr<SectionForceDeformation> s = Registry::global().sections.build(a, *domain_);
   const int tag = s->tag();
   domain_->sections.add(tag, s, a.context());
   currentSectionTag_ = tag;
@@ -163,8 +151,7 @@ Result Interpreter::fiber(CommandArgs& a) {
 }
 
 Result Interpreter::beamIntegration(CommandArgs& a) {
-  std::shared_ptr<BeamIntegration> rule =
-      buildFromRegistry<BeamIntegration>(a, *domain_, Registry::global().beamIntegrations);
+  std::shared_ptr<BeamIntegration> rule = Registry::global().beamIntegrations.build(a, *domain_);
   domain_->beamIntegrations.add(rule->tag(), rule, a.context());
   return {};
 }

@@ -99,6 +99,86 @@ def test_rc_pile_bars_yield_just_above_the_first_yield_moment(ops):
     assert abs(ops.eleResponse(1, "section", 2, "fiber", y30, z30, STEEL, "stress")[0]) < FY
 
 
+FPC, EPSC0, FPCU, EPSU = -30.0e3, -0.002, -20.0e3, -0.0035  # Concrete01 (kPa)
+
+
+def cracked_first_yield():
+    """First-yield moment of the pile section with concrete that carries no
+    tension (Hognestad parabola in compression) and elastic bars: strain
+    compatibility, the tension bar at y = -R_BARS at fy/Es, axial force zero
+    found by bisection. The concrete integral is over the circle in the
+    angle t (y = R sin t), split at the neutral axis, by Gauss-Legendre."""
+    R = D / 2
+    ey = FY / ES
+    bars_y = R_BARS * np.cos(2 * np.pi * np.arange(N_BARS) / N_BARS)
+    x, w = np.polynomial.legendre.leggauss(400)
+
+    def resultants(eps0):
+        kappa = (ey - eps0) / R_BARS  # eps0 - y kappa = ey at y = -R_BARS
+        y_neutral = min(max(eps0 / kappa, -R), R)  # compression above it
+        t0, t1 = math.asin(y_neutral / R), math.pi / 2
+        t = t0 + (t1 - t0) * (x + 1) / 2
+        y = R * np.sin(t)
+        dA = (t1 - t0) / 2 * w * 2 * R * R * np.cos(t) ** 2  # width * dy
+        eps = eps0 - y * kappa
+        eta = eps / EPSC0
+        parabola = FPC * eta * (2 - eta)
+        linear = FPC + (FPCU - FPC) / (EPSU - EPSC0) * (eps - EPSC0)
+        sig = np.where(eps > EPSC0, parabola, np.where(eps > EPSU, linear, FPCU))
+        bars = np.clip(ES * (eps0 - bars_y * kappa), -FY, FY)
+        P = np.sum(sig * dA) + A_BAR * bars.sum()
+        M = -np.sum(sig * y * dA) - A_BAR * np.sum(bars * bars_y)
+        return P, M, kappa, eps.min()
+
+    lo, hi = -0.003, ey  # P < 0 and P > 0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if resultants(mid)[0] < 0.0:
+            lo = mid
+        else:
+            hi = mid
+    P, M, kappa, most_compressed = resultants(0.5 * (lo + hi))
+    assert abs(P) < 1e-6 * FY * A_BAR and most_compressed > EPSC0  # on the smooth parabola
+    return M, kappa
+
+
+def cracked_pile(ops, M):
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 3.0, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.uniaxialMaterial("Concrete01", CONCRETE, FPC, EPSC0, FPCU, EPSU)
+    ops.uniaxialMaterial("Steel01", STEEL, FY, ES, 0.01)
+    ops.section("Fiber", 1, "-GJ", 1.0e6)
+    ops.patch("circ", CONCRETE, 64, 40, 0.0, 0.0, 0.0, D / 2)
+    ops.layer("circ", STEEL, N_BARS, A_BAR, 0.0, 0.0, R_BARS)
+    ops.beamIntegration("Lobatto", 1, 1, 3)
+    ops.element("forceBeamColumn", 1, 1, 2, 1, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 0.0, 0.0, 0.0, 0.0, 0.0, M)
+    static_setup(ops, ("LoadControl", 0.1))
+    assert ops.analyze(10) == 0
+
+
+@pytest.mark.parametrize("factor", [0.997, 1.003])
+def test_cracked_rc_pile_first_yield_moment(ops, factor):
+    """Concrete01 (no tension) and Steel01 fibers: the bars yield within
+    +-0.3 % of the strain-compatibility first-yield moment."""
+    My, kappa_y = cracked_first_yield()
+    assert My < transformed_section()[1]  # cracking lowers it
+    cracked_pile(ops, factor * My)
+    stress, strain = ops.eleResponse(1, "section", 2, "fiber", -R_BARS, 0.0, STEEL, "stressStrain")
+    if factor < 1:
+        assert stress < FY and strain < FY / ES
+        # Below yield the section is elastic-cracked: its curvature is close to the hand value.
+        kappa = ops.eleResponse(1, "section", 2, "deformation")[1]
+        assert kappa == pytest.approx(factor * kappa_y, rel=5e-3)
+    else:
+        assert stress >= FY and strain > FY / ES
+
+
 # --- elastic-perfectly plastic cantilever pushover ----------------------------------
 
 E, FY_S, B, H, L = 2.0e5, 300.0, 0.1, 0.2, 2.0
