@@ -285,3 +285,42 @@ def test_section_commands_report_errors(ops):
         ops.beamIntegration("Lobatto", 1, 1, 1)
     with pytest.raises(beamsolid.OpenSeesError, match="section 4 does not exist"):
         ops.beamIntegration("Legendre", 1, 4, 3)
+
+
+@pytest.mark.parametrize("element", ["forceBeamColumn", "dispBeamColumn"])
+def test_elastic_beam_columns_match_elastic_beam_under_corotational_large_displacement(ops, element):
+    """With an elastic section the basic stiffness of both elements equals
+    elasticBeamColumn's (Lobatto 3 and Legendre 2 integrate it exactly), so a
+    Corotational cantilever bent through large rotations must follow the
+    same path (1e-8, the element compatibility tolerance and Newton's)."""
+    E_, A_, Iz, Iy, G_, J_ = 2.0e5, 0.01, 1.0e-5, 2.0e-5, 8.0e4, 3.0e-5
+    Lc, n = 2.0, 8
+
+    def run(kind):
+        ops.wipe()
+        ops.model("basic", "-ndm", 3, "-ndf", 6)
+        for k in range(n + 1):
+            ops.node(k + 1, Lc * k / n, 0.0, 0.0)
+        ops.fix(1, 1, 1, 1, 1, 1, 1)
+        ops.geomTransf("Corotational", 1, 0.0, 0.0, 1.0)
+        if kind != "elasticBeamColumn":
+            ops.section("Elastic", 1, E_, A_, Iz, Iy, G_, J_)
+            ops.beamIntegration("Lobatto" if kind == "forceBeamColumn" else "Legendre", 1, 1,
+                                3 if kind == "forceBeamColumn" else 2)
+        for k in range(n):
+            if kind == "elasticBeamColumn":
+                ops.element(kind, k + 1, k + 1, k + 2, A_, E_, G_, J_, Iy, Iz, 1)
+            else:
+                ops.element(kind, k + 1, k + 1, k + 2, 1, 1)
+        ops.timeSeries("Linear", 1)
+        ops.pattern("Plain", 1, 1)
+        # A tip moment that bends the cantilever into most of a circle, plus a lateral push.
+        ops.load(n + 1, 0.0, 0.0, 0.5, 0.0, 0.0, 1.5 * math.pi * E_ * Iz / Lc)
+        static_setup(ops, ("LoadControl", 0.05), tol=1e-9)
+        assert ops.analyze(20) == 0
+        return np.array(ops.nodeDisp(n + 1))
+
+    reference = run("elasticBeamColumn")
+    assert np.hypot(reference[0], reference[1]) > 0.8 * Lc  # large displacement
+    result = run(element)
+    assert np.max(np.abs(result - reference)) < 1e-8 * np.max(np.abs(reference))
