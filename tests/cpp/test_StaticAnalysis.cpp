@@ -9,6 +9,8 @@
 #include "core/OpenSeesError.h"
 #include "support/Script.h"
 #include "support/TestSpring.h"
+#include "analysis/StaticAnalysis.h"
+#include "core/Registry.h"
 
 using namespace beamsolid;
 using namespace beamsolid::testing;
@@ -240,4 +242,57 @@ TEST(StaticAnalysis, RigidBeamLinkTransformationMatchesPenalty) {
   EXPECT_NEAR(results[0][1], -3.0 / 500.0, 1e-12);
   EXPECT_NEAR(results[1][0], results[0][0], 1e-8);
   EXPECT_NEAR(results[1][1], results[0][1], 1e-8);
+}
+
+namespace {
+template <class T, class Table>
+std::unique_ptr<T> buildFrom(const Table& table, Domain& d, std::vector<CommandArgs::Value> args) {
+  CommandArgs a("test", std::move(args));
+  return table.build(a, d);
+}
+}  // namespace
+
+// The pattern is built once per model change and the solver's symbolic
+// analysis reused while it holds; numeric factorization happens per iteration.
+TEST(StaticAnalysis, SymbolicAnalysisIsReusedUntilTheModelChanges) {
+  registerTestTypes();
+  Script s;  // only to build the model through commands
+  s("model", "basic", "-ndm", 3, "-ndf", 3);
+  for (int i = 1; i <= 4; ++i) s("node", i, double(i - 1), 0.0, 0.0);
+  s("fix", 1, 1, 1, 1);
+  for (int i = 2; i <= 4; ++i) s("fix", i, 0, 1, 1);
+  s("element", "testSpring", 1, 1, 2, 10.0, 50.0);
+  s("element", "testSpring", 2, 2, 3, 10.0, 50.0);
+  s("element", "testSpring", 3, 3, 4, 10.0, 50.0);
+  s("timeSeries", "testLinear", 1);
+  s("pattern", "Plain", 1, 1);
+  s("load", 4, 2.0, 0.0, 0.0);
+  Domain& domain = s.interp.domain();
+  Registry& r = Registry::global();
+  for (const char* system : {"UmfPack", "Cholmod"}) {
+    AnalysisComponents c;
+    c.handler = buildFrom<ConstraintHandler>(r.constraintHandlers, domain, {std::string("Transformation")});
+    c.numberer = buildFrom<Numberer>(r.numberers, domain, {std::string("RCM")});
+    c.solver = buildFrom<LinearSolver>(r.systems, domain, {std::string(system)});
+    c.test = buildFrom<ConvergenceTest>(r.tests, domain, {std::string("NormDispIncr"), 1e-12, 20LL});
+    c.algorithm = buildFrom<Algorithm>(r.algorithms, domain, {std::string("Newton")});
+    c.integrator = buildFrom<Integrator>(r.integrators, domain, {std::string("LoadControl"), 0.1});
+    StaticAnalysis analysis(domain, c);
+    int iterations = 0;
+    for (int step = 0; step < 5; ++step) {
+      ASSERT_EQ(analysis.analyze(1), 0);
+      iterations += c.test->numIterations();
+    }
+    EXPECT_EQ(c.solver->numAnalyze(), 1) << system;
+    EXPECT_EQ(c.solver->numFactorize(), iterations) << system;
+    // A new element changes the pattern: one more symbolic analysis.
+    s("node", 5, 4.0, 0.0, 0.0);
+    s("fix", 5, 0, 1, 1);
+    s("element", "testSpring", 10, 4, 5, 10.0);
+    ASSERT_EQ(analysis.analyze(1), 0);
+    EXPECT_EQ(c.solver->numAnalyze(), 2) << system;
+    s("remove", "element", 10);
+    s("remove", "node", 5);
+    domain.revertToStart();
+  }
 }
