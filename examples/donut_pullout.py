@@ -109,26 +109,41 @@ def plot(results, path):
     fig.savefig(path, dpi=120)
 
 
+def drag_estimate(s):
+    """1 - unloading if the drag above depth z, Q(z) = mu pi B K0 gamma z^2 / 2, unloaded the
+    vertical stress uniformly over the annulus and sigma_h followed by K0:
+    int K0 Q(z)/A dz / int sigma_h dz = mu pi B K0 D / (3 A), A = pi (R_out^2 - R^2)."""
+    area = math.pi * (s.outer_radius**2 - s.pile_radius**2)
+    return s.mu * math.pi * 2.0 * s.pile_radius * s.K0 * s.depth / (3.0 * area)
+
+
 def refinement_study(mu=1.0):
     """Facet factor and unloading under mesh refinement at full sliding (mu = 1)."""
-    base = DonutPullout(mu=mu, steps=8)
+    # Fixed increments of 4 mm until two steps past full sliding.
+    base = DonutPullout(mu=mu, pull=0.12, steps=30)
     meshes = [("n_theta", dict(n_theta=n)) for n in (8, 16, 32)]
     meshes += [("n_radial", dict(n_radial=n)) for n in (2, 4, 8)]
     meshes += [("n_z", dict(n_z=n)) for n in (5, 10, 20)]
     meshes += [("all", dict(n_theta=8 * k, n_radial=2 * k, n_z=5 * k)) for k in (1, 2, 4)]
-    print(f"\nMesh refinement at full sliding, mu = {mu:g} (base mesh 16 x 4 x 10)")
+    # Not a mesh change: a wider donut spreads the drag over more soil.
+    meshes += [("R_out", dict(outer_radius=r, n_radial=n)) for r, n in ((2.5, 3), (10.0, 6))]
+    print(f"\nMesh refinement at full sliding, mu = {mu:g} (base mesh 16 x 4 x 10, R_out = 5 m)")
     print(f"{'refined':>9s}{'mesh':>12s}{'facet':>8s}{'unload':>8s}{'Q/Qs':>8s}{'facet*unl':>10s}"
-          f"{'open':>6s}{'time s':>8s}")
+          f"{'open':>6s}{'d_full mm':>10s}{'1-unl est':>10s}{'time s':>8s}")
     rows = []
     for name, change in meshes:
         s = replace(base, **change)
         t0 = time.perf_counter()
-        r = run(s)
+        r = run(s, extra_after_full_sliding=2)
         k = len(r.head_force) - 1
+        if r.full_sliding is None:
+            print(f"{name:>9s}: no full sliding within {1e3 * s.head_pull:g} mm")
+            continue
         ratio = r.head_force[k] / s.beta_method
         rows.append((name, s, r, ratio))
         print(f"{name:>9s}{f'{s.n_theta}x{s.n_radial}x{s.n_z}':>12s}{s.facet_factor:8.4f}{r.unloading:8.4f}"
-              f"{ratio:8.4f}{s.facet_factor * r.unloading:10.4f}{r.open:6d}{time.perf_counter() - t0:8.1f}")
+              f"{ratio:8.4f}{s.facet_factor * r.unloading:10.4f}{r.open:6d}{1e3 * r.head_disp[r.full_sliding]:10.1f}"
+              f"{drag_estimate(s):10.4f}{time.perf_counter() - t0:8.1f}")
     return rows
 
 

@@ -276,7 +276,10 @@ class DonutModel:
         r.sticking.append(stick)
         r.sliding.append(slide)
 
-    def pull(self, r, stop_at_full_sliding=False):
+    def pull(self, r, extra_after_full_sliding=None):
+        """Pull for setup.steps steps; with extra_after_full_sliding = k, stop k steps
+        after the first step at full sliding."""
+        full = None
         for step in range(self.s.steps):
             t0 = time.perf_counter()
             ok = self.m.analyze(1)
@@ -286,13 +289,18 @@ class DonutModel:
                 break
             r.iterations.append(self.m.testIter())
             self.record(r)
-            if stop_at_full_sliding and r.full_sliding is not None:
+            if full is None:
+                full = r.full_sliding
+            if extra_after_full_sliding is not None and full is not None and \
+                    len(r.head_force) - 1 - full >= extra_after_full_sliding:
                 break
         return r
 
 
-def run(setup, stop_at_full_sliding=False, m=None):
-    """Both stages of one donut pullout; the result holds the curves and sums."""
+def run(setup, extra_after_full_sliding=None, m=None):
+    """Both stages of one donut pullout; the result holds the curves and sums.
+
+    With extra_after_full_sliding = k the pull stops k steps after full sliding."""
     model = DonutModel(setup, m).build()
     r = PulloutResult(setup=setup, n_contacts=len(model.contacts))
     t0 = time.perf_counter()
@@ -300,7 +308,7 @@ def run(setup, stop_at_full_sliding=False, m=None):
     t1 = time.perf_counter()
     model.release()
     model.record(r)
-    model.pull(r, stop_at_full_sliding)
+    model.pull(r, extra_after_full_sliding)
     r.geostatic_time, r.pullout_time = t1 - t0, time.perf_counter() - t1
     model.m.wipe()
     return r
