@@ -259,3 +259,16 @@ def test_a_bad_friction_stage_is_a_clear_error(model):
         model.updateMaterialStage("-material", 1, "-stage", 3)
     with pytest.raises(beamsolid.OpenSeesError, match="^element BeamContact3D 1: .*must be 0"):
         model.setParameter("-val", 0.5, "-ele", 1, "friction")
+
+
+def test_an_element_added_later_on_the_multiplier_node_is_refused_at_analyze(model):
+    pile_and_soil_node(model)
+    held_soil_node(model)
+    model.element("BeamContact3D", 1, 1, 2, 3, 4, 0.3, 1, 1, 1e-8, 1e-8)
+    assert static(model, "UmfPack") == 0
+    model.element("zeroLength", 41, 8, 4, "-mat", 3, "-dir", 1)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"^element BeamContact3D 1: multiplier node 4 is also used "
+                                                      r"by element 41"):
+        model.analyze(1)
+    model.remove("element", 41)
+    assert model.analyze(1) == 0
