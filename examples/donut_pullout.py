@@ -72,19 +72,21 @@ def describe(s):
 def table(results):
     print()
     print(f"{'':13s}{'this model':>39s}{'beta':>10s}{'':>24s}{'paper (Table 1)':>27s}")
-    print(f"{'mu':>5s}{'G':>8s}{'Q_contact':>11s}{'mu*sum(N)':>11s}{'open':>6s}{'steps':>6s}"
+    print(f"{'mu':>5s}{'G':>8s}{'Q_contact':>11s}{'mu*sum(N)':>11s}{'open':>6s}{'d_full':>7s}"
           f"{'Qs':>10s}{'%diff':>7s}{'facet':>8s}{'unload':>8s}{'|':>3s}"
           f"{'Q_contact':>10s}{'Qs':>7s}{'%diff':>7s}")
     for r, (mu, G, q_paper, qs_paper) in zip(results, PAPER_TABLE1):
         s = r.setup
         k = len(r.head_force) - 1
         q = r.q_contact
-        print(f"{mu:5.2f}{G:8.0f}{q:11.2f}{mu * r.normal_sum[k]:11.2f}{r.open:6d}{len(r.iterations):6d}"
+        d_full = f"{1e3 * r.head_disp[r.full_sliding]:7.1f}" if r.full_sliding is not None else f"{'-':>7s}"
+        print(f"{mu:5.2f}{G:8.0f}{q:11.2f}{mu * r.normal_sum[k]:11.2f}{r.open:6d}{d_full}"
               f"{s.beta_method:10.2f}{100 * (q - s.beta_method) / s.beta_method:7.1f}"
               f"{s.facet_factor:8.4f}{r.unloading:8.4f}{'|':>3s}"
               f"{q_paper:10.0f}{qs_paper:7.0f}{100 * (q_paper - qs_paper) / qs_paper:7.1f}")
     print("  Q_contact: maximum head force (= summed friction); open: contacts the pull has opened "
-          "(top level); facet: n sin(2pi/n)/(2pi); unload: sum N at full sliding / geostatic sum N")
+          "(top level);\n  d_full: head displacement (mm) at which no contact sticks any more; "
+          "facet: n sin(2pi/n)/(2pi);\n  unload: sum N at full sliding / geostatic sum N")
 
 
 def plot(results, path):

@@ -32,7 +32,7 @@ Reference values:
 """
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 from ..mesh import donut
 from ..model import Model
@@ -126,7 +126,8 @@ class PulloutResult:
     sticking: list = field(default_factory=list)  # number of sticking contacts
     sliding: list = field(default_factory=list)  # number of sliding contacts
     iterations: list = field(default_factory=list)  # Newton iterations per pullout step
-    step_time: list = field(default_factory=list)  # seconds per pullout step (analyze only)
+    step_time: list = field(default_factory=list)  # seconds per pullout step (analyze only), wall
+    step_cpu: list = field(default_factory=list)  # the same, CPU time of the process
     n_contacts: int = 0
     geostatic_time: float = 0.0
     pullout_time: float = 0.0
@@ -180,6 +181,7 @@ class DonutModel:
     def build(self):
         s, m = self.s, self.m
         m.wipe()
+        self.pile_nodes, self.contacts = [], []
         h = s.layer
         R = s.pile_radius
         m.model("basic", "-ndm", 3, "-ndf", 6)
@@ -281,9 +283,10 @@ class DonutModel:
         after the first step at full sliding."""
         full = None
         for step in range(self.s.steps):
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.process_time()
             ok = self.m.analyze(1)
             r.step_time.append(time.perf_counter() - t0)
+            r.step_cpu.append(time.process_time() - c0)
             if ok != 0:
                 r.failed_step = step + 1
                 break
@@ -313,6 +316,3 @@ def run(setup, extra_after_full_sliding=None, m=None):
     model.m.wipe()
     return r
 
-
-def with_mu(setup, mu):
-    return replace(setup, mu=mu)
