@@ -40,7 +40,7 @@ test-python: build
 test: test-cpp test-python
 
 demo: build
-	PYTHONPATH=python MPLBACKEND=Agg $(PY) examples/demo.py
+	PYTHONPATH=python MPLBACKEND=Agg $(PY) examples/donut_pullout.py
 
 clean:
 	rm -rf $(BUILD) python/beamsolid/*.so

@@ -1,5 +1,7 @@
 #include "elements/contact/BeamContact3D.h"
 
+#include <unordered_map>
+
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Node.h"
@@ -7,6 +9,55 @@
 #include "core/Registry.h"
 
 namespace beamsolid {
+
+namespace {
+
+// Who uses the multiplier nodes of a domain's BeamContact3D elements, built
+// once per model change and shared by all of them: the first update after a
+// change then checks every contact in O(model size) in total, not per contact.
+struct MultiplierNodeUse {
+  std::vector<int> elements;  // tags of the elements on the node, in tag order (at most two kept)
+  bool constrained = false;   // by fix/sp, a pattern's sp or a multi-point constraint
+};
+
+struct MultiplierNodeIndex {
+  const Domain* domain = nullptr;
+  long stamp = -1;
+  std::unordered_map<int, MultiplierNodeUse> uses;
+
+  void rebuild(const Domain& d) {
+    uses.clear();
+    for (const auto& [tag, e] : d.elements())
+      if (dynamic_cast<const BeamContact3D*>(e.get())) uses[e->nodeTags()[3]];
+    for (const auto& [tag, e] : d.elements())
+      for (int t : e->nodeTags()) {
+        auto it = uses.find(t);
+        if (it == uses.end()) continue;
+        auto& users = it->second.elements;
+        if (users.size() < 2 && (users.empty() || users.back() != tag)) users.push_back(tag);
+      }
+    auto mark = [this](int node) {
+      auto it = uses.find(node);
+      if (it != uses.end()) it->second.constrained = true;
+    };
+    for (const auto& sp : d.sps()) mark(sp.nodeTag);
+    for (const auto& [ptag, p] : d.patterns())
+      for (const auto& sp : p->sps()) mark(sp.nodeTag);
+    for (const auto& mp : d.mps()) {
+      mark(mp.constrainedNode);
+      mark(mp.retainedNode);
+    }
+    domain = &d;
+    stamp = d.modelStamp();
+  }
+};
+
+MultiplierNodeIndex& multiplierNodeIndex() {
+  static MultiplierNodeIndex index;
+  return index;
+}
+
+}  // namespace
 
 BeamContact3D::BeamContact3D(int tag, int iNode, int jNode, int sNode, int lNode, double radius,
                              std::unique_ptr<CrdTransf> transf, std::unique_ptr<ContactMaterial3D> material,
@@ -24,7 +75,7 @@ void BeamContact3D::setDomain(Domain& domain) {
   setUpGeometry();
   domain_ = &domain;
   checkMultiplierNode();
-  checkedStamp_ = -1;
+  checkedStamp_ = domain.modelStamp();  // checked; adding the element changes the stamp again
   update();
 }
 
@@ -56,9 +107,18 @@ void BeamContact3D::checkMultiplierNode() const {
 double BeamContact3D::lambda() const { return nodes()[3]->trialDisp()(0); }
 
 void BeamContact3D::update() {
-  // The model may have changed since the last check (elements, fixes).
+  // The model may have changed since the last check (elements, fixes). The
+  // shared index clears the usual case; anything it flags gets the full
+  // check, which finds and names the offender.
   if (domain_ && domain_->modelStamp() != checkedStamp_) {
-    checkMultiplierNode();
+    MultiplierNodeIndex& index = multiplierNodeIndex();
+    const int l = nodeTags()[3];
+    if (index.domain != domain_ || index.stamp != domain_->modelStamp() || !index.uses.count(l))
+      index.rebuild(*domain_);
+    const auto found = index.uses.find(l);
+    if (found == index.uses.end() || found->second.constrained || found->second.elements.size() != 1 ||
+        found->second.elements[0] != tag())
+      checkMultiplierNode();
     checkedStamp_ = domain_->modelStamp();
   }
   updateGeometry();

@@ -12,8 +12,8 @@ std::unique_ptr<ContactMaterial3D> cloneContactMaterial(const NDMaterial& protot
   std::unique_ptr<NDMaterial> copy = prototype.clone("ContactMaterial3D");
   auto* contact = dynamic_cast<ContactMaterial3D*>(copy.get());
   if (!contact)
-    throw OpenSeesError(context + ": nDMaterial " + std::to_string(prototype.tag()) + " is a " +
-                        prototype.className() + "; beam contact elements need a ContactMaterial3D");
+    throw OpenSeesError(context + ": nDMaterial " + std::to_string(prototype.tag()) + " (" + prototype.className() +
+                        ") is not a ContactMaterial3D; beam contact elements need a ContactMaterial3D");
   copy.release();
   return std::unique_ptr<ContactMaterial3D>(contact);
 }

@@ -646,8 +646,8 @@ TEST(BeamContact3D, BadInputGivesClearErrors) {
   EXPECT_NE(error([&](Domain& d) { contact(d, 1); }, 3, 6).find("multiplier node 4 has 6 dofs, expected 3"),
             std::string::npos);
   EXPECT_NE(error([&](Domain& d) { contact(d, 1, 2); })
-                .find("element BeamContact3D 1: nDMaterial 2 is a ElasticIsotropic3D; beam contact elements need a "
-                      "ContactMaterial3D"),
+                .find("element BeamContact3D 1: nDMaterial 2 (ElasticIsotropic3D) is not a ContactMaterial3D; beam "
+                      "contact elements need a ContactMaterial3D"),
             std::string::npos);
   EXPECT_NE(error([&](Domain& d) { contact(d, 1, 1, 0.0); }).find("argument 6 (radius): expected a positive number"),
             std::string::npos);

@@ -1,0 +1,1 @@
+"""Ready-made models shared by the examples, the tests and the benchmarks."""
