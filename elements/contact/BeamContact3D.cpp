@@ -10,9 +10,10 @@ namespace beamsolid {
 
 BeamContact3D::BeamContact3D(int tag, int iNode, int jNode, int sNode, int lNode, double radius,
                              std::unique_ptr<CrdTransf> transf, std::unique_ptr<ContactMaterial3D> material,
-                             double gapTolerance, double forceTolerance, int cSwitch)
+                             double gapTolerance, double forceTolerance, int cSwitch,
+                             std::vector<int> pileNodeTags)
     : BeamContactElement(tag, {iNode, jNode, sNode, lNode}, radius, std::move(transf), std::move(material),
-                         cSwitch == 0),
+                         cSwitch == 0, std::move(pileNodeTags)),
       gapTolerance_(gapTolerance),
       forceTolerance_(forceTolerance) {}
 
@@ -21,7 +22,7 @@ void BeamContact3D::setDomain(Domain& domain) {
   if (l.ndf() != 3)
     throw OpenSeesError(context() + ": multiplier node " + std::to_string(l.tag()) + " has " +
                         std::to_string(l.ndf()) + " dofs, expected 3");
-  setUpGeometry();
+  setUpGeometry(domain);
   domain_ = &domain;
   checkMultiplierNode();
   checkedStamp_ = -1;
@@ -30,6 +31,11 @@ void BeamContact3D::setDomain(Domain& domain) {
 
 void BeamContact3D::checkMultiplierNode() const {
   const int l = nodeTags()[3];
+  // The usual case in O(1): the only user is this element (once added) and
+  // no constraint touches the node; otherwise find out what is wrong.
+  const Domain::NodeUsage usage = domain_->nodeUsage(l);
+  const int own = domain_->findElement(tag()) == this ? 1 : 0;
+  if (usage.elements == own && usage.constraints == 0) return;
   const std::string which = ": multiplier node " + std::to_string(l);
   for (const auto& [tag, e] : domain_->elements()) {
     if (e.get() == this) continue;
@@ -101,7 +107,7 @@ void BeamContact3D::update() {
 bool BeamContact3D::nextContactStatus(double convergedGap) {
   const double gap = inContact_ ? convergedGap : geometry_.committedGap();
   const bool wasInContact = gap < gapTolerance_;
-  return wasInContact && !shouldRelease_ && geometry_.inBounds();
+  return wasInContact && !shouldRelease_ && ownsNode();
 }
 
 namespace {
@@ -125,17 +131,19 @@ std::unique_ptr<Element> buildBeamContact3D(CommandArgs& args, Domain& domain) {
   const double forceTol = args.nextDouble("forceTol");
   if (!(forceTol >= 0.0)) args.failAt(at, "forceTol", "a number >= 0");
   int cSwitch = 0;
-  if (!args.done()) {
+  if (!args.done() && !args.nextIsString()) {
     at = args.position();
     cSwitch = args.nextInt("cSwitch");
     if (cSwitch != 0 && cSwitch != 1)
       args.failAt(at, "cSwitch", "0 (initially in contact) or 1 (initially not in contact)");
   }
+  std::vector<int> pile;
+  if (args.nextFlag("-pile")) pile = args.nextInts("pile beam node tags", 2);
   args.expectEnd();
   auto transf = domain.geomTransfs.get(transfTag, args.context()).clone();
   auto material = cloneContactMaterial(domain.ndMaterials.get(matTag, args.context()), args.context());
   return std::make_unique<BeamContact3D>(tag, iNode, jNode, sNode, lNode, radius, std::move(transf),
-                                         std::move(material), gapTol, forceTol, cSwitch);
+                                         std::move(material), gapTol, forceTol, cSwitch, std::move(pile));
 }
 
 void registerBeamContact3D(Registry& r) { r.elements.add("BeamContact3D", &buildBeamContact3D); }
