@@ -63,7 +63,8 @@ void BeamContactElement::setUpGeometry(Domain& domain) {
     try {
       pile_->synchronize();
       initializeOnPile(std::numeric_limits<double>::quiet_NaN());
-      handOver();  // to the segment that holds the node's projection
+      Vector3 base[2] = {geometry_.covariantBase(0), geometry_.covariantBase(1)};
+      handOver(base);  // to the segment that holds the node's projection
     } catch (const OpenSeesError& e) {
       throw OpenSeesError(context() + ": " + e.what());
     }
@@ -94,7 +95,7 @@ bool BeamContactElement::ownsNode() const {
   return true;
 }
 
-int BeamContactElement::handOver() {
+int BeamContactElement::handOver(Vector3 base[2]) {
   const int last = pile_->numSegments() - 1;
   int moved = 0;
   while (moved <= last) {
@@ -114,11 +115,13 @@ int BeamContactElement::handOver() {
     const double xiNext = candidate.xi();
     if (direction > 0 ? xiNext < -kHandOverTolerance : xiNext > 1.0 + kHandOverTolerance) break;
     // The friction state in the new surface coordinates: map(beta, alpha) =
-    // g'^beta . g_alpha keeps the physical elastic slip.
+    // g'^beta . g_alpha keeps the physical elastic slip s_e^alpha g_alpha.
     Matrix2 map;
     for (int b = 0; b < 2; ++b)
-      for (int a = 0; a < 2; ++a) map(b, a) = candidate.contravariantBase(b).dot(geometry_.covariantBase(a));
+      for (int a = 0; a < 2; ++a) map(b, a) = candidate.contravariantBase(b).dot(base[a]);
     material_->changeSurfaceCoordinates(map, candidate.metric());
+    base[0] = candidate.covariantBase(0);
+    base[1] = candidate.covariantBase(1);
     geometry_ = candidate;
     segment_ = next;
     ++moved;
@@ -164,6 +167,10 @@ void BeamContactElement::commitState() {
   slipIncrement_.setZero();
   const double convergedGap = geometry_.gap();
   const bool convergedSliding = status() == Status::Sliding;
+  // The base the step's elastic slip is expressed in (held projection data):
+  // the hand-over maps the friction state from it, not from the re-projected
+  // one, whose metric differs slightly on a stretched or bent segment.
+  Vector3 heldBase[2] = {geometry_.covariantBase(0), geometry_.covariantBase(1)};
   material_->commitState();
   int moved = 0;
   try {
@@ -171,7 +178,7 @@ void BeamContactElement::commitState() {
       pile_->synchronize();  // the frames advance once per commit, whichever element comes first
       geometry_.commit(nodeA(), nodeB(), nodeS(), pile_->frame(segment_, segment_),
                        pile_->frame(segment_ + 1, segment_));
-      moved = handOver();
+      moved = handOver(heldBase);
     } else {
       geometry_.commit(nodeA(), nodeB(), nodeS());
     }

@@ -147,8 +147,10 @@ class BeamContactElement : public Element {
  private:
   // Chained form: moves the element along the pile while its projection lies
   // beyond the current segment and the next segment holds it; re-connects.
-  // Returns the number of segments moved.
-  int handOver();
+  // base: the covariant base vectors g_alpha in which the material's elastic
+  // slip is expressed (those of the step's held projection). Returns the
+  // number of segments moved.
+  int handOver(Vector3 base[2]);
   // The geometry of the current segment from the pile's frames.
   void initializeOnPile(double xiStart);
 

@@ -581,3 +581,82 @@ TEST(DomainNodeUsage, CountsElementsAndConstraintsAndStaysCurrent) {
   EXPECT_EQ(d.nodeUsage(2).elements, 1);
   EXPECT_EQ(d.nodeUsage(99).elements, 0);
 }
+
+TEST(BeamContactPile, ElementTakesTheSegmentThatHoldsItsNodeAtCreationAndSharesThePile) {
+  Domain d;
+  buildPile(d, {Vector3(0, 0, 0), Vector3(0, 0, 1), Vector3(0, 0, 2), Vector3(0, 0, 3)});
+  // Soil node at z = 2.5, given segment 1-2: the element starts on 3-4.
+  BeamContact3D& e = addContact(d, 1, 1, 2, 10, 11, Vector3(kRadius, 0.0, 2.5));
+  EXPECT_EQ(e.segment(), 2);
+  EXPECT_EQ(e.nodeTags(), (std::vector<int>{3, 4, 10, 11}));
+  EXPECT_EQ(e.handOverCount(), 0);
+  EXPECT_NEAR(e.geometry().xi(), 0.5, 1e-14);
+  EXPECT_TRUE(e.inContact());
+  // The usage counts follow the final nodes.
+  EXPECT_EQ(d.nodeUsage(1).elements, 0);
+  EXPECT_EQ(d.nodeUsage(4).elements, 1);
+  EXPECT_EQ(d.nodeUsage(11).elements, 1);
+  // revertToStart keeps that segment.
+  d.revertToStart();
+  EXPECT_EQ(e.segment(), 2);
+  // Elements of one pile and geomTransf share the pile; another geomTransf has its own.
+  BeamContact3D& f = addContact(d, 2, 2, 3, 12, 13, Vector3(0.0, kRadius, 1.5));
+  EXPECT_EQ(e.pile(), f.pile());
+  addLinearTransf(d, 2, Vector3(0.0, 1.0, 0.0));
+  addNode(d, 14, 3, -kRadius, 0.0, 1.5);
+  addNode(d, 15, 3, -kRadius, 0.0, 1.5);
+  auto& g = dynamic_cast<BeamContact3D&>(
+      addElement(d, "BeamContact3D", 3, 2, 3, 14, 15, kRadius, 2, 1, 1e-8, 1e-8, "-pile", std::vector<int>{1, 2, 3, 4}));
+  EXPECT_NE(g.pile(), e.pile());
+  EXPECT_EQ(e.pile()->numSegments(), 3);
+  EXPECT_EQ(e.pile()->segmentLength(1), 1.0);
+}
+
+TEST(DomainSharedObject, LivesAsLongAsAnElementHoldsIt) {
+  Domain d;
+  int made = 0;
+  auto make = [&] {
+    ++made;
+    return std::make_shared<int>(made);
+  };
+  std::shared_ptr<int> a = d.sharedObject<int>("test/a", make);
+  std::shared_ptr<int> b = d.sharedObject<int>("test/a", make);
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(made, 1);
+  EXPECT_NE(d.sharedObject<int>("test/b", make), a);
+  a.reset();
+  b.reset();
+  EXPECT_EQ(*d.sharedObject<int>("test/a", make), 3);  // a fresh one
+}
+
+TEST(BeamContactPile, SlidingFrictionIsKeptExactlyAcrossAHandOverFromAStretchedSegment) {
+  // Segment 1-2 stretched by 1 % (committed): its |g_xi| varies along xi, so
+  // the friction state must be mapped from the base it was computed in (the
+  // step's held projection), not from the re-projected one.
+  Domain d;
+  buildPile(d, {Vector3(0, 0, 0), Vector3(0, 0, 2), Vector3(0, 0, 3)});
+  BeamContact3D& e = addContact(d, 1, 1, 2, 10, 11, Vector3(kRadius, 0.0, 1.5));
+  Vector u2 = Vector::Zero(6);
+  u2(2) = 0.02;
+  setDisp(d, 2, u2);
+  setDisp(d, 3, u2);
+  d.update();
+  d.commit();
+  const double lambda = 40.0, capacity = kMu * lambda + kC;
+  setLambda(d, 11, lambda);
+  // Slide up over node 2 in two steps; the second ends past it.
+  for (double dz : {0.3, 0.62}) {
+    setDisp(d, 10, Vector(Vector3(0.0, 0.0, dz)));
+    d.update();
+    ASSERT_EQ(e.status(), BeamContactElement::Status::Sliding);
+    EXPECT_NEAR(e.frictionForce().norm(), capacity, 1e-12 * capacity);
+    d.commit();
+  }
+  ASSERT_EQ(e.handOverCount(), 1);
+  EXPECT_EQ(e.status(), BeamContactElement::Status::Sliding);
+  EXPECT_NEAR(e.frictionForce().norm(), capacity, 1e-12 * capacity);
+  EXPECT_LE((e.frictionForce().normalized() - Vector3(0.0, 0.0, -1.0)).norm(), 1e-12);
+  // The re-projected base on the old segment differs from the held one here.
+  const BeamContactGeometry& g = e.geometry();
+  EXPECT_NEAR(g.covariantBase(0).norm(), 1.0, 1e-12);  // segment 2-3 is not stretched
+}
