@@ -220,3 +220,35 @@ def test_pile_interface_errors(ops):
     assert iface.elements == [1] and iface.multiplier_nodes == [13]
     assert iface.element_of == {12: 1} and iface.segment_of == {12: (1, 2)}
     assert ops.eleNodes(1) == [1, 2, 12, 13]
+
+
+def test_displacement_control_pullout_across_a_beam_node(ops):
+    # DisplacementControl forms its tangent before the step's first update: a handed-over element
+    # must already have its matrices on the new segment's dofs. (A fully sliding pile has no axial
+    # tangent stiffness, so a soft axial tie from the pile top to a fixed node keeps K regular.)
+    pile, donut, iface = build_pullout(ops, levels=(1.8, 1.2), n_z=1, n_theta=6)
+    confine(ops, donut)
+    top = pile[-1]
+    ops.node(99, 0.0, 0.0, 4.0, "-ndf", 6)
+    ops.fix(99, 1, 1, 1, 1, 1, 1)
+    tie_area, young = 1e-6, 3e7  # EA / L = 30
+    ops.element("elasticBeamColumn", 99, top, 99, tie_area, young, 1.2e7, 1e-8, 1e-8, 1e-8, 1)
+    ops.updateMaterialStage("-material", 1, "-stage", 1)
+    ops.remove("sp", top, 3)
+    ops.timeSeries("Linear", 2)
+    ops.pattern("Plain", 2, 2)
+    ops.load(top, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    analysis(ops, 1.0)
+    ops.integrator("DisplacementControl", top, 3, STEP)
+    steps = round(1.1 / STEP)  # both levels pass beam node 5 (z = 1)
+    for step in range(1, steps + 1):
+        assert ops.analyze(1) == 0, f"step {step}"
+        f = contact.interface_forces(ops, iface)
+        assert f.released == 0
+        if f.sliding == len(iface.elements):
+            # The pull force (load factor times the unit reference load) is the friction plus the tie.
+            tie = tie_area * young * ops.nodeDisp(top, 3) / 1.0
+            assert ops.getLoadFactor(2) == pytest.approx(f.friction[2] + tie, rel=1e-8), f"step {step}"
+            assert f.friction[2] == pytest.approx(MU * f.normal, rel=1e-10)
+    assert f.hand_overs == len(iface.elements)
+    assert ops.nodeDisp(top, 3) == pytest.approx(1.1, rel=1e-12)
