@@ -87,8 +87,6 @@ class Element {
   // the nodes itself. Only between steps (e.g. in commitState()), never
   // inside a Newton iteration, and only after connect().
   void reconnect(std::vector<int> nodeTags);
-  // The Domain of the last connect(); nullptr before.
-  Domain* connectedDomain() const { return domain_; }
   // "element <className> <tag>", the prefix of this element's messages.
   std::string context() const;
 
