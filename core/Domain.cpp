@@ -17,7 +17,9 @@ void Domain::addNode(std::unique_ptr<Node> node, const std::string& context) {
   const int tag = node->tag();
   if (nodes_.count(tag)) throw OpenSeesError(context + ": node " + std::to_string(tag) + " already exists");
   nodes_.emplace(tag, std::move(node));
+  const bool usageCurrent = nodeUsageStamp_ == modelStamp_;
   touch();
+  if (usageCurrent) nodeUsageStamp_ = modelStamp_;  // a new node is used by nothing yet
 }
 
 Node* Domain::findNode(int tag) const {
@@ -55,8 +57,15 @@ void Domain::addElement(std::unique_ptr<Element> element, const std::string& con
   if (elements_.count(tag))
     throw OpenSeesError(context + ": element " + std::to_string(tag) + " already exists");
   element->connect(*this);
+  // (connect() may have refreshed the usage cache; this element is not in it yet.)
+  const bool usageCurrent = nodeUsageStamp_ == modelStamp_;
+  const Element& added = *element;
   elements_.emplace(tag, std::move(element));
   touch();
+  if (usageCurrent) {
+    for (int t : added.nodeTags()) ++nodeUsage_[t].elements;
+    nodeUsageStamp_ = modelStamp_;
+  }
 }
 
 Element* Domain::findElement(int tag) const {
@@ -73,8 +82,42 @@ Element& Domain::element(int tag, const std::string& context) const {
 void Domain::removeElement(int tag, const std::string& context) {
   element(tag, context);
   for (auto& [ptag, p] : patterns_) p->removeReferencesTo(-1, tag);
+  const bool usageCurrent = nodeUsageStamp_ == modelStamp_;
+  if (usageCurrent)
+    for (int t : elements_.at(tag)->nodeTags()) --nodeUsage_[t].elements;
   elements_.erase(tag);
   touch();
+  if (usageCurrent) nodeUsageStamp_ = modelStamp_;
+}
+
+void Domain::elementReconnected(const Element& e, const std::vector<int>& oldTags) {
+  // An element being connected (not yet added) is not counted.
+  const bool counted = findElement(e.tag()) == &e;
+  const bool usageCurrent = nodeUsageStamp_ == modelStamp_;
+  if (usageCurrent && counted) {
+    for (int t : oldTags) --nodeUsage_[t].elements;
+    for (int t : e.nodeTags()) ++nodeUsage_[t].elements;
+  }
+  touch();
+  if (usageCurrent) nodeUsageStamp_ = modelStamp_;
+}
+
+Domain::NodeUsage Domain::nodeUsage(int nodeTag) const {
+  if (nodeUsageStamp_ != modelStamp_) {
+    nodeUsage_.clear();
+    for (const auto& [tag, e] : elements_)
+      for (int t : e->nodeTags()) ++nodeUsage_[t].elements;
+    for (const auto& sp : sps_) ++nodeUsage_[sp.nodeTag].constraints;
+    for (const auto& [tag, p] : patterns_)
+      for (const auto& sp : p->sps()) ++nodeUsage_[sp.nodeTag].constraints;
+    for (const auto& mp : mps_) {
+      ++nodeUsage_[mp.constrainedNode].constraints;
+      ++nodeUsage_[mp.retainedNode].constraints;
+    }
+    nodeUsageStamp_ = modelStamp_;
+  }
+  auto it = nodeUsage_.find(nodeTag);
+  return it == nodeUsage_.end() ? NodeUsage{} : it->second;
 }
 
 void Domain::addSP(const SPConstraint& sp, const std::string& context) {

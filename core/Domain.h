@@ -1,6 +1,9 @@
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/Constraints.h"
@@ -40,6 +43,34 @@ class Domain {
   Element& element(int tag, const std::string& context) const;
   const std::map<int, std::unique_ptr<Element>>& elements() const { return elements_; }
   void removeElement(int tag, const std::string& context);
+  // Called by Element::reconnect() after element e changed its nodes from
+  // oldTags to e.nodeTags(): keeps the node-usage counts and touches the model.
+  void elementReconnected(const Element& e, const std::vector<int>& oldTags);
+
+  // How many element node slots refer to a node, and how many constraints
+  // involve it (fix/sp, imposed displacements of load patterns, either end of
+  // a multi-point constraint). Cached: rebuilt at most once per model stamp
+  // and kept current through addNode/addElement/removeElement/reconnect, so
+  // per-element checks (e.g. "this multiplier node is mine alone") cost O(1)
+  // instead of a scan of the whole model.
+  struct NodeUsage {
+    int elements = 0;
+    int constraints = 0;
+  };
+  NodeUsage nodeUsage(int nodeTag) const;
+
+  // Objects that several elements share (e.g. the nodal frames of a pile
+  // along which contact elements hand their nodes over), found by a key the
+  // element type chooses (prefix it with the type's name). The Domain holds
+  // them weakly: an object lives as long as an element holds it. make() is
+  // called when no live object has the key.
+  template <class T>
+  std::shared_ptr<T> sharedObject(const std::string& key, const std::function<std::shared_ptr<T>()>& make) {
+    if (auto existing = sharedObjects_[key].lock()) return std::static_pointer_cast<T>(existing);
+    std::shared_ptr<T> made = make();
+    sharedObjects_[key] = made;
+    return made;
+  }
 
   // --- constraints ----------------------------------------------------------
   // Homogeneous or fixed-value constraints from fix/fixX/...; an existing
@@ -121,6 +152,10 @@ class Domain {
   double currentTime_ = 0.0;
   double committedTime_ = 0.0;
   long modelStamp_ = 0;
+  // Node-usage cache (nodeUsage()), valid while nodeUsageStamp_ == modelStamp_.
+  mutable std::unordered_map<int, NodeUsage> nodeUsage_;
+  mutable long nodeUsageStamp_ = -1;
+  std::map<std::string, std::weak_ptr<void>> sharedObjects_;
 };
 
 }  // namespace beamsolid

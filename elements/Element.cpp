@@ -13,6 +13,7 @@ std::string Element::context() const {
 }
 
 void Element::connect(Domain& domain) {
+  domain_ = &domain;
   nodes_.clear();
   numDOF_ = 0;
   for (int t : nodeTags_) {
@@ -22,6 +23,23 @@ void Element::connect(Domain& domain) {
     numDOF_ += n->ndf();
   }
   setDomain(domain);
+}
+
+void Element::reconnect(std::vector<int> nodeTags) {
+  if (!domain_) throw OpenSeesError(context() + ": cannot change the nodes of an element that is not in a domain");
+  std::vector<Node*> nodes;
+  int numDOF = 0;
+  for (int t : nodeTags) {
+    Node* n = domain_->findNode(t);
+    if (!n) throw OpenSeesError(context() + ": node " + std::to_string(t) + " does not exist");
+    nodes.push_back(n);
+    numDOF += n->ndf();
+  }
+  std::vector<int> oldTags = std::move(nodeTags_);
+  nodeTags_ = std::move(nodeTags);
+  nodes_ = std::move(nodes);
+  numDOF_ = numDOF;
+  domain_->elementReconnected(*this, oldTags);
 }
 
 MatrixView Element::massMatrix() {

@@ -77,11 +77,22 @@ class Element {
   // Element-specific set-up once the nodes are known; throw OpenSeesError
   // naming the element (e.g. wrong ndf, zero length).
   virtual void setDomain(Domain&) {}
+  // Changes the element's nodes after creation (e.g. a contact element that
+  // hands its secondary node over to the next pile segment). The tags are
+  // resolved against the Domain the element was connected to (clear error
+  // for a missing node; the old nodes stay on error), numDOF() follows, and
+  // the Domain's model stamp is touched so that the analysis renumbers and
+  // rebuilds its scatter maps before the next step. setDomain() is not
+  // called again: the element keeps its state and updates what depends on
+  // the nodes itself. Only between steps (e.g. in commitState()), never
+  // inside a Newton iteration, and only after connect().
+  void reconnect(std::vector<int> nodeTags);
   // "element <className> <tag>", the prefix of this element's messages.
   std::string context() const;
 
  private:
   int tag_;
+  Domain* domain_ = nullptr;  // not owned: the Domain of the last connect()
   std::vector<int> nodeTags_;
   std::vector<Node*> nodes_;
   int numDOF_ = 0;

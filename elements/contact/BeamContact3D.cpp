@@ -1,7 +1,5 @@
 #include "elements/contact/BeamContact3D.h"
 
-#include <unordered_map>
-
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Node.h"
@@ -10,60 +8,12 @@
 
 namespace beamsolid {
 
-namespace {
-
-// Who uses the multiplier nodes of a domain's BeamContact3D elements, built
-// once per model change and shared by all of them: the first update after a
-// change then checks every contact in O(model size) in total, not per contact.
-struct MultiplierNodeUse {
-  std::vector<int> elements;  // tags of the elements on the node, in tag order (at most two kept)
-  bool constrained = false;   // by fix/sp, a pattern's sp or a multi-point constraint
-};
-
-struct MultiplierNodeIndex {
-  const Domain* domain = nullptr;
-  long stamp = -1;
-  std::unordered_map<int, MultiplierNodeUse> uses;
-
-  void rebuild(const Domain& d) {
-    uses.clear();
-    for (const auto& [tag, e] : d.elements())
-      if (dynamic_cast<const BeamContact3D*>(e.get())) uses[e->nodeTags()[3]];
-    for (const auto& [tag, e] : d.elements())
-      for (int t : e->nodeTags()) {
-        auto it = uses.find(t);
-        if (it == uses.end()) continue;
-        auto& users = it->second.elements;
-        if (users.size() < 2 && (users.empty() || users.back() != tag)) users.push_back(tag);
-      }
-    auto mark = [this](int node) {
-      auto it = uses.find(node);
-      if (it != uses.end()) it->second.constrained = true;
-    };
-    for (const auto& sp : d.sps()) mark(sp.nodeTag);
-    for (const auto& [ptag, p] : d.patterns())
-      for (const auto& sp : p->sps()) mark(sp.nodeTag);
-    for (const auto& mp : d.mps()) {
-      mark(mp.constrainedNode);
-      mark(mp.retainedNode);
-    }
-    domain = &d;
-    stamp = d.modelStamp();
-  }
-};
-
-MultiplierNodeIndex& multiplierNodeIndex() {
-  static MultiplierNodeIndex index;
-  return index;
-}
-
-}  // namespace
-
 BeamContact3D::BeamContact3D(int tag, int iNode, int jNode, int sNode, int lNode, double radius,
                              std::unique_ptr<CrdTransf> transf, std::unique_ptr<ContactMaterial3D> material,
-                             double gapTolerance, double forceTolerance, int cSwitch)
+                             double gapTolerance, double forceTolerance, int cSwitch,
+                             std::vector<int> pileNodeTags)
     : BeamContactElement(tag, {iNode, jNode, sNode, lNode}, radius, std::move(transf), std::move(material),
-                         cSwitch == 0),
+                         cSwitch == 0, std::move(pileNodeTags)),
       gapTolerance_(gapTolerance),
       forceTolerance_(forceTolerance) {}
 
@@ -72,7 +22,7 @@ void BeamContact3D::setDomain(Domain& domain) {
   if (l.ndf() != 3)
     throw OpenSeesError(context() + ": multiplier node " + std::to_string(l.tag()) + " has " +
                         std::to_string(l.ndf()) + " dofs, expected 3");
-  setUpGeometry();
+  setUpGeometry(domain);
   domain_ = &domain;
   checkMultiplierNode();
   checkedStamp_ = domain.modelStamp();  // checked; adding the element changes the stamp again
@@ -81,6 +31,11 @@ void BeamContact3D::setDomain(Domain& domain) {
 
 void BeamContact3D::checkMultiplierNode() const {
   const int l = nodeTags()[3];
+  // The usual case in O(1): the only user is this element (once added) and
+  // no constraint touches the node; otherwise find out what is wrong.
+  const Domain::NodeUsage usage = domain_->nodeUsage(l);
+  const int own = domain_->findElement(tag()) == this ? 1 : 0;
+  if (usage.elements == own && usage.constraints == 0) return;
   const std::string which = ": multiplier node " + std::to_string(l);
   for (const auto& [tag, e] : domain_->elements()) {
     if (e.get() == this) continue;
@@ -107,18 +62,10 @@ void BeamContact3D::checkMultiplierNode() const {
 double BeamContact3D::lambda() const { return nodes()[3]->trialDisp()(0); }
 
 void BeamContact3D::update() {
-  // The model may have changed since the last check (elements, fixes). The
-  // shared index clears the usual case; anything it flags gets the full
-  // check, which finds and names the offender.
+  // The model may have changed since the last check (elements, fixes):
+  // the Domain's node-usage count makes the check O(1).
   if (domain_ && domain_->modelStamp() != checkedStamp_) {
-    MultiplierNodeIndex& index = multiplierNodeIndex();
-    const int l = nodeTags()[3];
-    if (index.domain != domain_ || index.stamp != domain_->modelStamp() || !index.uses.count(l))
-      index.rebuild(*domain_);
-    const auto found = index.uses.find(l);
-    if (found == index.uses.end() || found->second.constrained || found->second.elements.size() != 1 ||
-        found->second.elements[0] != tag())
-      checkMultiplierNode();
+    checkMultiplierNode();
     checkedStamp_ = domain_->modelStamp();
   }
   updateGeometry();
@@ -161,7 +108,7 @@ void BeamContact3D::update() {
 bool BeamContact3D::nextContactStatus(double convergedGap) {
   const double gap = inContact_ ? convergedGap : geometry_.committedGap();
   const bool wasInContact = gap < gapTolerance_;
-  return wasInContact && !shouldRelease_ && geometry_.inBounds();
+  return wasInContact && !shouldRelease_ && ownsNode();
 }
 
 namespace {
@@ -185,17 +132,19 @@ std::unique_ptr<Element> buildBeamContact3D(CommandArgs& args, Domain& domain) {
   const double forceTol = args.nextDouble("forceTol");
   if (!(forceTol >= 0.0)) args.failAt(at, "forceTol", "a number >= 0");
   int cSwitch = 0;
-  if (!args.done()) {
+  if (!args.done() && !args.nextIsString()) {
     at = args.position();
     cSwitch = args.nextInt("cSwitch");
     if (cSwitch != 0 && cSwitch != 1)
       args.failAt(at, "cSwitch", "0 (initially in contact) or 1 (initially not in contact)");
   }
+  std::vector<int> pile;
+  if (args.nextFlag("-pile")) pile = args.nextInts("pile beam node tags", 2);
   args.expectEnd();
   auto transf = domain.geomTransfs.get(transfTag, args.context()).clone();
   auto material = cloneContactMaterial(domain.ndMaterials.get(matTag, args.context()), args.context());
   return std::make_unique<BeamContact3D>(tag, iNode, jNode, sNode, lNode, radius, std::move(transf),
-                                         std::move(material), gapTol, forceTol, cSwitch);
+                                         std::move(material), gapTol, forceTol, cSwitch, std::move(pile));
 }
 
 void registerBeamContact3D(Registry& r) { r.elements.add("BeamContact3D", &buildBeamContact3D); }

@@ -8,7 +8,7 @@ class Domain;
 // Frictional beam-solid contact with a Lagrange multiplier for the normal
 // force (Arduino, Petek & Mackenzie-Helnwein 2007; beam_contact_formulation.md):
 //   element('BeamContact3D', tag, iNode, jNode, sNode, lNode, radius, transfTag,
-//           matTag, gapTol, forceTol, <cSwitch=0>)
+//           matTag, gapTol, forceTol, <cSwitch=0>, <'-pile', *beamNodeTags>)
 // iNode, jNode: beam nodes (ndf 6); sNode: solid node (ndf 3); lNode: this
 // element's own multiplier node (ndf 3, free, used by no other element): its
 // first dof is the normal force lambda (positive = compression), the other
@@ -28,6 +28,11 @@ class Domain;
 // which would release sliding nodes for any small gapTol.) A change of
 // status is seen one step late; the error this lag makes shrinks with the
 // step size. cSwitch 0 starts in contact, 1 out of contact.
+//
+// '-pile', *beamNodeTags: the ordered beam nodes of the whole pile (iNode,
+// jNode consecutive in it): the chained form of BeamContactElement, which
+// hands the soil node over to the neighbouring segment instead of releasing
+// it, so "inside the segment" above becomes "along the pile".
 class BeamContact3D : public BeamContactElement {
  public:
   using Vector18 = Eigen::Matrix<double, 18, 1>;
@@ -35,7 +40,7 @@ class BeamContact3D : public BeamContactElement {
 
   BeamContact3D(int tag, int iNode, int jNode, int sNode, int lNode, double radius, std::unique_ptr<CrdTransf> transf,
                 std::unique_ptr<ContactMaterial3D> material, double gapTolerance, double forceTolerance,
-                int cSwitch);
+                int cSwitch, std::vector<int> pileNodeTags = {});
 
   std::string className() const override { return "BeamContact3D"; }
 
@@ -63,7 +68,7 @@ class BeamContact3D : public BeamContactElement {
   double gapTolerance_, forceTolerance_;
   bool shouldRelease_ = false;
   // Not owned: the domain this element belongs to, to re-check the
-  // multiplier node when the model changes.
+  // multiplier node (O(1) through Domain::nodeUsage) when the model changes.
   const Domain* domain_ = nullptr;
   long checkedStamp_ = -1;
 

@@ -9,16 +9,17 @@ namespace beamsolid {
 
 BeamContact3Dp::BeamContact3Dp(int tag, int iNode, int jNode, int sNode, double radius,
                                std::unique_ptr<CrdTransf> transf, std::unique_ptr<ContactMaterial3D> material,
-                               double penalty, int cSwitch)
-    : BeamContactElement(tag, {iNode, jNode, sNode}, radius, std::move(transf), std::move(material), cSwitch == 0),
+                               double penalty, int cSwitch, std::vector<int> pileNodeTags)
+    : BeamContactElement(tag, {iNode, jNode, sNode}, radius, std::move(transf), std::move(material), cSwitch == 0,
+                         std::move(pileNodeTags)),
       penalty_(penalty),
       activated_(cSwitch == 0) {
   if (!(penalty_ > 0.0))
     throw OpenSeesError(context() + ": penalty must be positive, got " + std::to_string(penalty_));
 }
 
-void BeamContact3Dp::setDomain(Domain&) {
-  setUpGeometry();
+void BeamContact3Dp::setDomain(Domain& domain) {
+  setUpGeometry(domain);
   update();
 }
 
@@ -50,7 +51,7 @@ void BeamContact3Dp::update() {
 
 bool BeamContact3Dp::nextContactStatus(double) {
   if (geometry_.committedGap() < 0.0) activated_ = true;
-  return activated_ && geometry_.inBounds();
+  return activated_ && ownsNode();
 }
 
 void BeamContact3Dp::revertToStart() {
@@ -75,17 +76,19 @@ std::unique_ptr<Element> buildBeamContact3Dp(CommandArgs& args, Domain& domain) 
   const double penalty = args.nextDouble("penalty");
   if (!(penalty > 0.0)) args.failAt(at, "penalty", "a positive number");
   int cSwitch = 0;
-  if (!args.done()) {
+  if (!args.done() && !args.nextIsString()) {
     at = args.position();
     cSwitch = args.nextInt("cSwitch");
     if (cSwitch != 0 && cSwitch != 1)
       args.failAt(at, "cSwitch", "0 (initially in contact) or 1 (initially not in contact)");
   }
+  std::vector<int> pile;
+  if (args.nextFlag("-pile")) pile = args.nextInts("pile beam node tags", 2);
   args.expectEnd();
   auto transf = domain.geomTransfs.get(transfTag, args.context()).clone();
   auto material = cloneContactMaterial(domain.ndMaterials.get(matTag, args.context()), args.context());
   return std::make_unique<BeamContact3Dp>(tag, iNode, jNode, sNode, radius, std::move(transf), std::move(material),
-                                          penalty, cSwitch);
+                                          penalty, cSwitch, std::move(pile));
 }
 
 void registerBeamContact3Dp(Registry& r) { r.elements.add("BeamContact3Dp", &buildBeamContact3Dp); }

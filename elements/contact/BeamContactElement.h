@@ -1,8 +1,10 @@
 #pragma once
 #include <memory>
+#include <vector>
 
 #include "elements/Element.h"
 #include "elements/contact/BeamContactGeometry.h"
+#include "elements/contact/BeamContactPile.h"
 #include "elements/transforms/CrdTransf.h"
 #include "materials/nd/ContactMaterial3D.h"
 
@@ -20,6 +22,21 @@ namespace beamsolid {
 // secondary node; the primary* responses are the contact forces and moments
 // acting on the beam nodes (equivalent nodal actions of the reaction on the
 // pile); together they are in equilibrium.
+//
+// Chained form ('-pile', *beamNodeTags): the element belongs to a whole pile
+// (BeamContactPile, shared by the pile's contact elements) instead of one
+// segment. At commit, when the re-projected xi_c leaves [0, 1] and the pile
+// continues there, the element hands its soil node over to the neighbouring
+// segment: it re-projects onto it, keeps its material copy (the friction
+// state, expressed in the new surface coordinates), its multiplier node and
+// lambda and its contact status, and re-connects to the new beam nodes
+// (Element::reconnect, so the analysis renumbers before the next step). The
+// nodal frames of every segment come from the pile's shared frames, so a
+// handed-over element sees exactly the frames the elements already on that
+// segment track. A chained element owns its node anywhere along the pile --
+// also exactly level with a beam node (closed interval, with a hand-over
+// tolerance of 1e-9 in xi so that such a node does not flip between the two
+// segments) -- and releases it only beyond the pile's ends.
 class BeamContactElement : public Element {
  public:
   using Vector2 = Eigen::Vector2d;
@@ -32,12 +49,26 @@ class BeamContactElement : public Element {
   const BeamContactGeometry& geometry() const { return geometry_; }
   const ContactMaterial3D& material() const { return *material_; }
   double radius() const { return radius_; }
+  // Hand-over hysteresis in xi: a chained element moves to the next segment
+  // only once xi_c > 1 + tol (or < -tol).
+  static constexpr double kHandOverTolerance = 1e-9;
+  // The pile of the chained form (nullptr without '-pile'), the index of the
+  // element's current segment in it (-1 without), and how many hand-overs
+  // happened since the start.
+  const BeamContactPile* pile() const { return pile_.get(); }
+  int segment() const { return segment_; }
+  int handOverCount() const { return handOvers_; }
+  // Whether the element holds its node's projection: 0 < xi_c < 1 without a
+  // chain; with a chain anywhere along the pile (not beyond its ends).
+  bool ownsNode() const;
   // The status of the current step (decided at the last commit, C20).
   bool inContact() const { return inContact_; }
   // Normal force t_n of the trial state (lambda or the penalty force); zero
   // out of contact.
   double normalForce() const { return normalForce_; }
-  // Status of the last update: separated, sticking or sliding.
+  // Status of the last update: separated, sticking or sliding. (After a
+  // hand-over the element updates once more, on the new segment with no slip
+  // increment; it reports the status its step converged with.)
   Status status() const;
   // The following describe the state of the last update() (also after a
   // commit has re-projected the node), so that recorded values belong together.
@@ -73,18 +104,22 @@ class BeamContactElement : public Element {
   // force (3), frictionforce (3), forcescalar (3), masterforce|primaryforce (6),
   // mastermoment|primarymoment (6), masterreaction|primaryreaction (12),
   // slip (2), gap (1), status (1: 0 separated, 1 sticking, 2 sliding), xi (1),
-  // normal (3). Names are matched case-insensitively.
+  // normal (3), segment (2: the current beam node tags), handovers (1).
+  // Names are matched case-insensitively.
   Response setResponse(const std::vector<std::string>& args) override;
 
   void print(std::ostream& os) const override;
 
  protected:
+  // pileNodeTags: the '-pile' chain (empty: a single segment).
   BeamContactElement(int tag, std::vector<int> nodeTags, double radius, std::unique_ptr<CrdTransf> transf,
-                     std::unique_ptr<ContactMaterial3D> material, bool initiallyInContact);
+                     std::unique_ptr<ContactMaterial3D> material, bool initiallyInContact,
+                     std::vector<int> pileNodeTags);
 
-  // Checks the beam and secondary nodes, initializes the transformation and
-  // the geometry, and sets the initial status.
-  void setUpGeometry();
+  // Checks the beam and secondary nodes, initializes the transformation (or
+  // joins the pile and moves to the segment that holds the node's
+  // projection) and the geometry, and sets the initial status.
+  void setUpGeometry(Domain& domain);
   // Geometry from the nodes' trial state (allocation-free).
   void updateGeometry();
   // Keeps what the responses report from this update (allocation-free);
@@ -110,9 +145,24 @@ class BeamContactElement : public Element {
   Vector15 mechanicalForce_ = Vector15::Zero();
 
  private:
+  // Chained form: moves the element along the pile while its projection lies
+  // beyond the current segment and the next segment holds it; re-connects.
+  // base: the covariant base vectors g_alpha in which the material's elastic
+  // slip is expressed (those of the step's held projection). Returns the
+  // number of segments moved.
+  int handOver(Vector3 base[2]);
+  // The geometry of the current segment from the pile's frames.
+  void initializeOnPile(double xiStart);
+
   double radius_;
   std::unique_ptr<CrdTransf> transf_;
   bool initiallyInContact_;
+  std::vector<int> pileNodeTags_;
+  std::shared_ptr<BeamContactPile> pile_;
+  int segment_ = -1, initialSegment_ = -1;
+  int handOvers_ = 0;
+  // The step before this commit's hand-over converged sliding (status()).
+  bool slidingAcrossHandOver_ = false;
   Vector2 committedSlip_ = Vector2::Zero();
   // Response state of the last update.
   Vector3 frictionForce_ = Vector3::Zero();

@@ -72,13 +72,42 @@ Vector3 BeamContactGeometry::centerlineCurvature(double xi) const {
   return ddh[0] * xa_ + ddh[1] * length_ * frameA_.col(0) + ddh[2] * xb_ + ddh[3] * length_ * frameB_.col(0);
 }
 
-void BeamContactGeometry::initialize(const Node& a, const Node& b, const Node& s, const Matrix3& localAxes,
-                                     double radius) {
-  radius_ = radius;
+void BeamContactGeometry::setLength(const Node& a, const Node& b) {
   length_ = (b.crd() - a.crd()).norm();
   if (!(length_ > 0.0))
     throw OpenSeesError("the beam nodes " + std::to_string(a.tag()) + " and " + std::to_string(b.tag()) +
                         " coincide at " + format(a.crd()));
+}
+
+void BeamContactGeometry::initialize(const Node& a, const Node& b, const Node& s, const Matrix3& frameA,
+                                     const Matrix3& frameB, double radius, double xiStart) {
+  radius_ = radius;
+  setLength(a, b);
+  setFrames(a, b, frameA, frameB);
+  if (std::isfinite(xiStart)) {
+    xi_ = xiStart;
+  } else {
+    const Vector3 chord = xb_ - xa_;
+    xi_ = std::clamp(chord.dot(position(s) - xa_) / chord.squaredNorm(), 0.0, 1.0);
+  }
+  setProjectionData(s);
+  update(a, b, s);
+}
+
+void BeamContactGeometry::setFrames(const Node& a, const Node& b, const Matrix3& frameA, const Matrix3& frameB) {
+  frameA_ = frameA;
+  frameB_ = frameB;
+  thetaA_ = rotation(a);
+  thetaB_ = rotation(b);
+  xa_ = position(a);
+  xb_ = position(b);
+  computeTwist();
+}
+
+void BeamContactGeometry::initialize(const Node& a, const Node& b, const Node& s, const Matrix3& localAxes,
+                                     double radius) {
+  radius_ = radius;
+  setLength(a, b);
   // Reference frames: columns = local x (along the beam), y, z (C1 start).
   frameA_ = localAxes.transpose();
   frameB_ = frameA_;
@@ -327,6 +356,13 @@ void BeamContactGeometry::setProjectionData(const Node& s) {
 
 void BeamContactGeometry::commit(const Node& a, const Node& b, const Node& s) {
   updateFrames(a, b);
+  setProjectionData(s);
+  update(a, b, s);
+}
+
+void BeamContactGeometry::commit(const Node& a, const Node& b, const Node& s, const Matrix3& frameA,
+                                 const Matrix3& frameB) {
+  setFrames(a, b, frameA, frameB);
   setProjectionData(s);
   update(a, b, s);
 }

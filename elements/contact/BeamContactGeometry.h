@@ -28,6 +28,13 @@ class BeamContactGeometry {
   // OpenSeesError (without element context) when the segment is degenerate
   // or the projection fails.
   void initialize(const Node& a, const Node& b, const Node& s, const Matrix3& localAxes, double radius);
+  // Chained (pile) form: the committed nodal frames frameA, frameB (columns:
+  // axis, section axes) at the nodes' current rotations are given -- by the
+  // pile's shared frames (BeamContactPile) -- instead of being tracked here.
+  // The projection starts from xiStart, or from the chord projection when
+  // xiStart is not finite. Used at set-up and to move to another segment.
+  void initialize(const Node& a, const Node& b, const Node& s, const Matrix3& frameA, const Matrix3& frameB,
+                  double radius, double xiStart);
 
   // Trial gap (C10) and incremental slip (C11) from the nodes' trial state.
   // Allocation-free.
@@ -38,6 +45,8 @@ class BeamContactGeometry {
   // frame, surface, metric and gradients (C6-C9, C12). Throws OpenSeesError
   // when the projection fails.
   void commit(const Node& a, const Node& b, const Node& s);
+  // The same with given nodal frames (chained form, see initialize()).
+  void commit(const Node& a, const Node& b, const Node& s, const Matrix3& frameA, const Matrix3& frameB);
 
   // --- trial state --------------------------------------------------------------
   double gap() const { return gap_; }
@@ -96,6 +105,8 @@ class BeamContactGeometry {
 
  private:
   void updateFrames(const Node& a, const Node& b);
+  void setFrames(const Node& a, const Node& b, const Matrix3& frameA, const Matrix3& frameB);
+  void setLength(const Node& a, const Node& b);
   void computeTwist();
   void setProjectionData(const Node& s);
   // Adds sign * (gradient of e . (H0 x_a + H1 L a1 + H2 x_b + H3 L b1)) to B.

@@ -137,6 +137,12 @@ void ContactMaterial3D::revertToLastCommit() {
   tangentNormal_.setZero();
 }
 
+void ContactMaterial3D::changeSurfaceCoordinates(const Matrix2& map, const Matrix2& newMetric) {
+  committedElasticSlip_ = map * committedElasticSlip_;
+  metric_ = newMetric;
+  revertToLastCommit();
+}
+
 void ContactMaterial3D::revertToStart() {
   committedElasticSlip_.setZero();
   release();

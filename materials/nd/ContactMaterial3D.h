@@ -45,6 +45,14 @@ class ContactMaterial3D : public NDMaterial {
   // Out of contact: no traction, and the elastic slip is reset so that
   // friction starts afresh when contact closes again.
   void release();
+  // The element's surface coordinates changed between steps (a hand-over to
+  // the next pile segment): the committed elastic slip -- the friction
+  // state -- is expressed in the new ones, s_e <- map s_e with
+  // map(beta, alpha) = g'^beta . g_alpha (new contravariant, old covariant
+  // base vectors), which keeps the physical elastic slip s_e^alpha g_alpha
+  // wherever it lies in the new tangent plane; the metric becomes newMetric
+  // and the trial state returns to the (mapped) committed one.
+  void changeSurfaceCoordinates(const Matrix2& map, const Matrix2& newMetric);
 
   // Covariant friction traction T_alpha.
   const Vector2& traction() const { return traction_; }
