@@ -193,7 +193,7 @@ PVDRecorder::Spec PVDRecorder::Spec::parse(CommandArgs& args, const std::string&
   s.stem = fs::path(name).filename().string();
   if (s.stem.empty() || s.stem == "." || s.stem == "..")
     args.failAt(nameAt, "name",
-                "a name for the output such as 'out' (which writes out.pvd and the folder out/), got '" + name + "'");
+                "a name for the output such as 'out' (which writes out.pvd and the folder out/)");
   s.directory = name;
   s.collectionPath = name + ".pvd";
 
