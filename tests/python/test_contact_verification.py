@@ -114,8 +114,8 @@ def test_newton_converges_quadratically_while_the_slip_turns():
     for _ in range(4):
         assert m.analyze(1) == 0
         assert model.status_counts() == (0, len(model.contacts))
-        norms = m.testNorm()
-        assert len(norms) == m.testIter() and 3 <= len(norms) <= 8
+        norms = m.testNorm()[: m.testIter()]  # padded with zeros to maxIter, as OpenSees
+        assert 3 <= len(norms) <= 8
         # Norms within 100x of the tolerance are round-off, not the rate.
         estimates += order_estimates(norms, 100 * tol)
     assert len(estimates) >= 6, estimates
