@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "core/Domain.h"
+#include "core/ElementStateError.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
@@ -29,16 +30,24 @@ int StaticAnalysis::runSteps(int numSteps) {
       c.integrator->domainChanged(model_);
       stepsSinceSetup_ = 0;
     }
-    if (c.integrator->newStep(model_) < 0) {
-      lastError_ = c.integrator->name() + ": could not start the step";
-      domain_.revertToLastCommit();
-      c.integrator->revert(model_);
-      return -2;
+    int result = 0;
+    std::string elementFailure;
+    try {
+      if (c.integrator->newStep(model_) < 0) {
+        lastError_ = c.integrator->name() + ": could not start the step";
+        domain_.revertToLastCommit();
+        c.integrator->revert(model_);
+        return -2;
+      }
+      result = c.algorithm->solveCurrentStep(model_, *c.integrator, *c.test);
+    } catch (const ElementStateError& e) {
+      result = -3;
+      elementFailure = e.what();
     }
-    if (c.algorithm->solveCurrentStep(model_, *c.integrator, *c.test) < 0) {
+    if (result < 0) {
       lastError_ = c.algorithm->name() + " at time " + std::to_string(domain_.currentTime()) + ": " +
-                   c.algorithm->lastError();
-      const bool singularModel = c.algorithm->failedOnSingularMatrix() && stepsSinceSetup_ == 0 &&
+                   (elementFailure.empty() ? c.algorithm->lastError() : elementFailure);
+      const bool singularModel = elementFailure.empty() && c.algorithm->failedOnSingularMatrix() && stepsSinceSetup_ == 0 &&
                                  domain_.committedTime() == 0.0;
       // A model that is singular before any step converged is a modelling
       // error, not a convergence failure: say so loudly (analyze() reverts).

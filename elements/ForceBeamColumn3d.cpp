@@ -1,5 +1,7 @@
 #include "elements/ForceBeamColumn3d.h"
 
+#include "core/ElementStateError.h"
+
 #include <cmath>
 #include <iostream>
 
@@ -123,9 +125,12 @@ void ForceBeamColumn3d::solveState(const Vector6& v) {
     for (int k = 1; k <= substeps && converged_; ++k)
       converged_ = iterate(committedDeformation_ + (double(k) / substeps) * (v - committedDeformation_));
   }
+  // A step the element cannot follow fails, as in OpenSees: the analysis
+  // reverts and returns a negative code so the script can cut the step.
   if (!converged_)
-    std::cerr << "WARNING " << context() << ": element compatibility not reached (" << options().maxIterations
-              << " iterations per substep, tol " << options().tolerance << "); the global iteration continues\n";
+    throw ElementStateError(context() + ": element compatibility not reached (" +
+                            std::to_string(options().maxIterations) + " iterations per substep, tol " +
+                            std::to_string(options().tolerance) + ")");
 }
 
 void ForceBeamColumn3d::ensureState() {
