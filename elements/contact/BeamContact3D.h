@@ -46,7 +46,7 @@ class BeamContact3D : public BeamContactElement {
   MatrixView initialStiff() override { return viewOf(stiffness_); }
   VectorView resistingForce() override { return viewOf(force_); }
 
-  // Lambda of the trial state (dof 1 of the multiplier node).
+  // Lambda (dof 1 of the multiplier node) at the last update.
   double lambda() const { return multiplier_.lambda(); }
   // lambda <= -forceTol at the last update: contact is released at commit.
   bool shouldRelease() const { return multiplier_.shouldRelease(); }

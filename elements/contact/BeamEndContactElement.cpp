@@ -97,7 +97,8 @@ Response BeamEndContactElement::setResponse(const std::vector<std::string>& args
   const std::string what = lowerCase(args[0]);
   if (what == "force")
     return Response::named({"Fx", "Fy", "Fz"}, [this] { return withoutNegativeZeros(contactForce()); });
-  if (what == "forcescalar") return Response::named({"N"}, [this] { return withoutNegativeZeros(vectorOf({normalForce_})); });
+  if (what == "forcescalar")
+    return Response::named({"N"}, [this] { return withoutNegativeZeros(vectorOf({normalForce_})); });
   // Contact action on the end node: minus the element's resisting force there.
   if (what == "masterforce" || what == "primaryforce")
     return Response::named({"Fx", "Fy", "Fz", "Mx", "My", "Mz"},

@@ -84,8 +84,8 @@ std::unique_ptr<EndModel> makeModel(const Vector3& xs, bool penalty, int cFlag =
   addNode(m->d, 2, 6, kOther.x(), kOther.y(), kOther.z());
   addNode(m->d, 3, 3, xs.x(), xs.y(), xs.z());
   if (penalty) {
-    m->element =
-        &dynamic_cast<BeamEndContactElement&>(addElement(m->d, "BeamEndContact3Dp", 1, 1, 2, 3, kRadius, kPenalty, cFlag));
+    m->element = &dynamic_cast<BeamEndContactElement&>(
+        addElement(m->d, "BeamEndContact3Dp", 1, 1, 2, 3, kRadius, kPenalty, cFlag));
   } else {
     addNode(m->d, 4, 3, 0.0, 0.0, 0.0);
     m->element = &dynamic_cast<BeamEndContactElement&>(
