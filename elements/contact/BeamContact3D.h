@@ -1,5 +1,6 @@
 #pragma once
 #include "elements/contact/BeamContactElement.h"
+#include "elements/contact/ContactMultiplier.h"
 
 namespace beamsolid {
 
@@ -50,28 +51,19 @@ class BeamContact3D : public BeamContactElement {
   MatrixView initialStiff() override { return viewOf(stiffness_); }
   VectorView resistingForce() override { return viewOf(force_); }
 
-  // Lambda of the trial state (dof 1 of the multiplier node).
-  double lambda() const;
+  // Lambda (dof 1 of the multiplier node) at the last update.
+  double lambda() const { return multiplier_.lambda(); }
   // lambda <= -forceTol at the last update: contact is released at commit.
-  bool shouldRelease() const { return shouldRelease_; }
-  double gapTolerance() const { return gapTolerance_; }
-  double forceTolerance() const { return forceTolerance_; }
+  bool shouldRelease() const { return multiplier_.shouldRelease(); }
+  double gapTolerance() const { return multiplier_.gapTolerance(); }
+  double forceTolerance() const { return multiplier_.forceTolerance(); }
 
  protected:
   void setDomain(Domain& domain) override;
   bool nextContactStatus(double convergedGap) override;
 
  private:
-  // The multiplier node must be free and belong to this element only.
-  void checkMultiplierNode() const;
-
-  double gapTolerance_, forceTolerance_;
-  bool shouldRelease_ = false;
-  // Not owned: the domain this element belongs to, to re-check the
-  // multiplier node (O(1) through Domain::nodeUsage) when the model changes.
-  const Domain* domain_ = nullptr;
-  long checkedStamp_ = -1;
-
+  ContactMultiplier multiplier_;
   Vector18 force_ = Vector18::Zero();
   Matrix18 stiffness_ = Matrix18::Zero();
 };

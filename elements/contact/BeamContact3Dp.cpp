@@ -4,6 +4,7 @@
 #include "core/Domain.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "elements/contact/ContactSupport.h"
 
 namespace beamsolid {
 
@@ -67,21 +68,11 @@ std::unique_ptr<Element> buildBeamContact3Dp(CommandArgs& args, Domain& domain) 
   const int iNode = args.nextInt("iNode");
   const int jNode = args.nextInt("jNode");
   const int sNode = args.nextInt("sNode");
-  std::size_t at = args.position();
-  const double radius = args.nextDouble("radius");
-  if (!(radius > 0.0)) args.failAt(at, "radius", "a positive number");
+  const double radius = readPositive(args, "radius");
   const int transfTag = args.nextInt("transfTag");
   const int matTag = args.nextInt("matTag");
-  at = args.position();
-  const double penalty = args.nextDouble("penalty");
-  if (!(penalty > 0.0)) args.failAt(at, "penalty", "a positive number");
-  int cSwitch = 0;
-  if (!args.done() && !args.nextIsString()) {
-    at = args.position();
-    cSwitch = args.nextInt("cSwitch");
-    if (cSwitch != 0 && cSwitch != 1)
-      args.failAt(at, "cSwitch", "0 (initially in contact) or 1 (initially not in contact)");
-  }
+  const double penalty = readPositive(args, "penalty");
+  const int cSwitch = args.nextIsString() ? 0 : readContactSwitch(args, "cSwitch");
   std::vector<int> pile;
   if (args.nextFlag("-pile")) pile = args.nextInts("pile beam node tags", 2);
   args.expectEnd();

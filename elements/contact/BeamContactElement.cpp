@@ -7,6 +7,7 @@
 #include "core/Domain.h"
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
+#include "elements/contact/ContactSupport.h"
 
 namespace beamsolid {
 
@@ -33,20 +34,11 @@ BeamContactElement::BeamContactElement(int tag, std::vector<int> nodeTags, doubl
 }
 
 void BeamContactElement::setUpGeometry(Domain& domain) {
-  const char* role[3] = {"primary (beam) node", "primary (beam) node", "secondary (solid) node"};
-  const int needed[3] = {6, 6, 3};
-  for (int k = 0; k < 3; ++k) {
-    const Node& n = *nodes()[k];
-    if (n.ndf() != needed[k])
-      throw OpenSeesError(context() + ": " + role[k] + " " + std::to_string(n.tag()) + " has " +
-                          std::to_string(n.ndf()) + " dofs, expected " + std::to_string(needed[k]));
-  }
+  requireNodeDofs(nodeA(), 6, "primary (beam) node", context());
+  requireNodeDofs(nodeB(), 6, "primary (beam) node", context());
+  requireNodeDofs(nodeS(), 3, "secondary (solid) node", context());
+  requireDistinctNodes(nodeTags(), context());
   const auto& tags = nodeTags();
-  for (std::size_t i = 0; i < tags.size(); ++i)
-    for (std::size_t j = i + 1; j < tags.size(); ++j)
-      if (tags[i] == tags[j])
-        throw OpenSeesError(context() + ": node " + std::to_string(tags[i]) +
-                            " appears twice; the beam, secondary and multiplier nodes must be distinct");
   if (!pileNodeTags_.empty()) {
     pile_ = domain.sharedObject<BeamContactPile>(BeamContactPile::key(transf_->tag(), pileNodeTags_), [&] {
       return std::make_shared<BeamContactPile>(domain, pileNodeTags_, *transf_, context());
@@ -243,60 +235,38 @@ void BeamContactElement::updateMaterialStage(int materialTag, int stage) {
   }
 }
 
-namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s;
-}
-
-// Responses print without negative zeros (-0.0 + 0.0 is +0.0).
-Vector clean(Vector v) {
-  v.array() += 0.0;
-  return v;
-}
-
-Vector vectorOf(std::initializer_list<double> values) {
-  Vector v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (double x : values) v(i++) = x;
-  return v;
-}
-
-}  // namespace
-
 Response BeamContactElement::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
-  const std::string what = lower(args[0]);
+  const std::string what = lowerCase(args[0]);
   if (what == "force")
-    return Response::named({"Fx", "Fy", "Fz"}, [this] { return clean(contactForce()); });
+    return Response::named({"Fx", "Fy", "Fz"}, [this] { return withoutNegativeZeros(contactForce()); });
   if (what == "frictionforce")
-    return Response::named({"Fx", "Fy", "Fz"}, [this] { return clean(frictionForce()); });
+    return Response::named({"Fx", "Fy", "Fz"}, [this] { return withoutNegativeZeros(frictionForce()); });
   if (what == "forcescalar")
-    return Response::named({"N", "T1", "T2"}, [this] { return clean(forceScalars()); });
+    return Response::named({"N", "T1", "T2"}, [this] { return withoutNegativeZeros(forceScalars()); });
   // Contact actions on the beam nodes: minus the element's resisting force there.
   if (what == "masterforce" || what == "primaryforce")
     return Response::named({"Fx_1", "Fy_1", "Fz_1", "Fx_2", "Fy_2", "Fz_2"}, [this] {
       Vector v(6);
       v << -mechanicalForce_.segment<3>(0), -mechanicalForce_.segment<3>(6);
-      return clean(v);
+      return withoutNegativeZeros(v);
     });
   if (what == "mastermoment" || what == "primarymoment")
     return Response::named({"Mx_1", "My_1", "Mz_1", "Mx_2", "My_2", "Mz_2"}, [this] {
       Vector v(6);
       v << -mechanicalForce_.segment<3>(3), -mechanicalForce_.segment<3>(9);
-      return clean(v);
+      return withoutNegativeZeros(v);
     });
   if (what == "masterreaction" || what == "primaryreaction")
     return Response::named({"Fx_1", "Fy_1", "Fz_1", "Mx_1", "My_1", "Mz_1", "Fx_2", "Fy_2", "Fz_2", "Mx_2", "My_2",
                             "Mz_2"},
-                           [this] { return clean(-mechanicalForce_.head<12>()); });
-  if (what == "slip") return Response::named({"s_xi", "s_psi"}, [this] { return clean(totalSlip()); });
+                           [this] { return withoutNegativeZeros(-mechanicalForce_.head<12>()); });
+  if (what == "slip") return Response::named({"s_xi", "s_psi"}, [this] { return withoutNegativeZeros(totalSlip()); });
   if (what == "gap") return Response::named({"gap"}, [this] { return vectorOf({gap()}); });
   if (what == "status")
     return Response::named({"status"}, [this] { return vectorOf({double(static_cast<int>(status()))}); });
   if (what == "xi") return Response::named({"xi"}, [this] { return vectorOf({xi()}); });
-  if (what == "normal") return Response::named({"nx", "ny", "nz"}, [this] { return clean(normal()); });
+  if (what == "normal") return Response::named({"nx", "ny", "nz"}, [this] { return withoutNegativeZeros(normal()); });
   if (what == "segment")
     return Response::named({"iNode", "jNode"},
                            [this] { return vectorOf({double(nodeTags()[0]), double(nodeTags()[1])}); });

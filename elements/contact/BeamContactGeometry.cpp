@@ -6,17 +6,11 @@
 
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
+#include "elements/contact/ContactSupport.h"
 
 namespace beamsolid {
 
 namespace {
-
-// exp(skew(w)): the rotation by |w| about w (C1).
-Matrix3 expSkew(const Vector3& w) {
-  const double angle = w.norm();
-  if (angle == 0.0) return Matrix3::Identity();
-  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
-}
 
 // The rotation taking unit vector a to unit vector c about a x c (no drilling)
 // applied to v:  (a.c) v + k x v + (k.v) k / (1 + a.c),  k = a x c.
@@ -124,8 +118,8 @@ void BeamContactGeometry::initialize(const Node& a, const Node& b, const Node& s
 void BeamContactGeometry::updateFrames(const Node& a, const Node& b) {
   // C1: rotate by the exponential map of the increment since the last update.
   const Vector3 thetaA = rotation(a), thetaB = rotation(b);
-  frameA_ = expSkew(thetaA - thetaA_) * frameA_;
-  frameB_ = expSkew(thetaB - thetaB_) * frameB_;
+  frameA_ = rotationExp(thetaA - thetaA_) * frameA_;
+  frameB_ = rotationExp(thetaB - thetaB_) * frameB_;
   thetaA_ = thetaA;
   thetaB_ = thetaB;
   xa_ = position(a);
