@@ -1,4 +1,4 @@
-"""Headline demo for `make demo` until the contact scenes land.
+"""A pile tied to the soil (no gap, no slip): the cheapest solid-soil model.
 
 A pile modelled with elastic beam elements, first as a free cantilever (checked
 against P L^3 / 3 E I), then embedded in an elastic soil block of 8-node bricks
