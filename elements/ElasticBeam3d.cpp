@@ -1,5 +1,7 @@
 #include "elements/ElasticBeam3d.h"
 
+#include "elements/BeamMass.h"
+
 #include "core/Domain.h"
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
@@ -39,46 +41,10 @@ void ElasticBeam3d::setDomain(Domain&) {
 }
 
 void ElasticBeam3d::formMass() {
-  mass_.setZero();
   const double m = properties_.massPerLength;
-  const double L = length_;
-  if (m == 0.0) return;
-  if (!properties_.consistentMass) {
-    // Lumped: half the translational mass at each end, no rotary inertia.
-    for (int d : {0, 1, 2, 6, 7, 8}) mass_(d, d) = 0.5 * m * L;
-    return;
-  }
-  // Consistent mass in local axes: linear axial and torsional fields, cubic
-  // Hermite bending in both planes (theta_z = v', theta_y = -w').
-  Matrix12 local = Matrix12::Zero();
-  const double axial = m * L / 6.0;
-  local(0, 0) = local(6, 6) = 2.0 * axial;
-  local(0, 6) = local(6, 0) = axial;
   // Torsional inertia per length m*J/A: exact for circular sections (J = Ip).
-  const double torsion = m * properties_.J / properties_.A * L / 6.0;
-  local(3, 3) = local(9, 9) = 2.0 * torsion;
-  local(3, 9) = local(9, 3) = torsion;
-  const double c = m * L / 420.0;
-  const Eigen::Matrix4d hermite = (Eigen::Matrix4d() << 156.0, 22.0 * L, 54.0, -13.0 * L,  //
-                                   22.0 * L, 4.0 * L * L, 13.0 * L, -3.0 * L * L,          //
-                                   54.0, 13.0 * L, 156.0, -22.0 * L,                       //
-                                   -13.0 * L, -3.0 * L * L, -22.0 * L, 4.0 * L * L)
-                                      .finished();
-  // x-y plane: (v_i, rz_i, v_j, rz_j); x-z plane: (w_i, -ry_i, w_j, -ry_j).
-  const int xy[4] = {1, 5, 7, 11};
-  const int xz[4] = {2, 4, 8, 10};
-  const double xzSign[4] = {1.0, -1.0, 1.0, -1.0};
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
-      local(xy[a], xy[b]) = c * hermite(a, b);
-      local(xz[a], xz[b]) = c * xzSign[a] * xzSign[b] * hermite(a, b);
-    }
-  // Rotation only: the mass sits on the flexible length between the offset
-  // ends, carried by the nodes without the rigid-arm coupling.
-  Matrix12 rotation = Matrix12::Zero();
-  const Matrix3 axes = transf_->localAxes();
-  for (int k = 0; k < 4; ++k) rotation.block<3, 3>(3 * k, 3 * k) = axes;
-  mass_ = rotation.transpose() * local * rotation;
+  // The mass sits on the flexible length between offset ends, rotated only.
+  mass_ = beamMass(m, length_, properties_.consistentMass, m * properties_.J / properties_.A, transf_->localAxes());
 }
 
 void ElasticBeam3d::update() { transf_->update(); }

@@ -1,5 +1,7 @@
 #include "elements/SectionBeamColumn3d.h"
 
+#include "elements/BeamMass.h"
+
 #include <variant>
 
 #include "core/CommandArgs.h"
@@ -38,39 +40,10 @@ void SectionBeamColumn3d::setDomain(Domain&) {
 }
 
 void SectionBeamColumn3d::formMass() {
-  mass_.setZero();
   const double m = options_.massPerLength;
-  const double L = length_;
-  if (m == 0.0) return;
-  if (!options_.consistentMass) {
-    // Lumped: half the translational mass at each end, no rotary inertia.
-    for (int d : {0, 1, 2, 6, 7, 8}) mass_(d, d) = 0.5 * m * L;
-    return;
-  }
-  // Consistent translational mass: linear axial field, cubic Hermite bending
-  // in both planes (theta_z = v', theta_y = -w'); no torsional inertia (the
-  // section does not say what its polar moment of mass is).
-  Matrix12 local = Matrix12::Zero();
-  local(0, 0) = local(6, 6) = m * L / 3.0;
-  local(0, 6) = local(6, 0) = m * L / 6.0;
-  const double c = m * L / 420.0;
-  const Eigen::Matrix4d hermite = (Eigen::Matrix4d() << 156.0, 22.0 * L, 54.0, -13.0 * L,  //
-                                   22.0 * L, 4.0 * L * L, 13.0 * L, -3.0 * L * L,          //
-                                   54.0, 13.0 * L, 156.0, -22.0 * L,                       //
-                                   -13.0 * L, -3.0 * L * L, -22.0 * L, 4.0 * L * L)
-                                      .finished();
-  const int xy[4] = {1, 5, 7, 11};
-  const int xz[4] = {2, 4, 8, 10};
-  const double xzSign[4] = {1.0, -1.0, 1.0, -1.0};
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
-      local(xy[a], xy[b]) = c * hermite(a, b);
-      local(xz[a], xz[b]) = c * xzSign[a] * xzSign[b] * hermite(a, b);
-    }
-  Matrix12 rotation = Matrix12::Zero();
-  const Matrix3 axes = transf_->localAxes();
-  for (int k = 0; k < 4; ++k) rotation.block<3, 3>(3 * k, 3 * k) = axes;
-  mass_ = rotation.transpose() * local * rotation;
+  // No torsional inertia: the section does not say what its polar moment of mass is.
+  // The mass sits on the flexible length between offset ends, rotated only.
+  mass_ = beamMass(m, length_, options_.consistentMass, 0.0, transf_->localAxes());
 }
 
 MatrixView SectionBeamColumn3d::tangentStiff() {
