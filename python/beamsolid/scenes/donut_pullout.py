@@ -34,6 +34,7 @@ import math
 import time
 from dataclasses import dataclass, field
 
+from ..geostatic import geostatic_stage
 from ..mesh import donut
 from ..model import Model
 
@@ -237,20 +238,19 @@ class DonutModel:
 
     # --- stages ---------------------------------------------------------------
     def geostatic(self):
-        """Stage 1: self weight with frictionless contacts and a fixed pile; returns sum N."""
-        m = self.m
-        m.updateMaterialStage("-material", CONTACT, "-stage", 0)
-        _static(m, self.s, 1.0)
-        if m.analyze(1) != 0:
-            raise RuntimeError("donut pullout: the geostatic stage did not converge")
+        """Stage 1: self weight with frictionless contacts and a fixed pile; returns sum N.
+
+        geostatic_stage checks sigma_v = gamma d and sigma_h = K0 sigma_v in every brick,
+        then loadConst('-time', 0) and the contacts get their friction back."""
+        s, m = self.s, self.m
+        self.geostatic_state = geostatic_stage(m, soil_elements=self.mesh.elements, gamma=s.gamma, K0=s.K0,
+                                               contact_materials=[CONTACT], tol=s.tol, max_iter=s.max_iter,
+                                               check_tol=1e-8)
         return self.normal_sum()
 
     def release(self):
-        """Stage 2 set-up: friction on, pile free along (and about) its axis, head motion imposed."""
+        """Stage 2 set-up: pile free along (and about) its axis, head motion imposed."""
         s, m = self.s, self.m
-        m.loadConst("-time", 0.0)
-        m.wipeAnalysis()
-        m.updateMaterialStage("-material", CONTACT, "-stage", 1)
         head = self.pile_nodes[0]
         for n in self.pile_nodes:
             m.remove("sp", n, 3)
