@@ -24,18 +24,17 @@ and its load; they are never part of the tests.
     PYTHONPATH=python python benchmarks/contact_element.py [--quick]
 """
 import argparse
-import ctypes
 import datetime
 import math
 import os
 import pathlib
 import platform
 import statistics
-import subprocess
 import sys
 import time
 
 import beamsolid
+import machine
 from beamsolid.scenes.donut_pullout import PAPER_TABLE1, DonutPullout, run
 
 RESULTS = pathlib.Path(__file__).parent / "results"
@@ -112,41 +111,6 @@ def time_per_iteration(n_contacts, with_contacts, algorithm, steps=4, repeats=3)
 def slope(xs, ys):
     mx, my = statistics.fmean(xs), statistics.fmean(ys)
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
-
-
-def openblas_in_use():
-    """Version, build configuration and kernel of the OpenBLAS that SuiteSparse loaded in this process."""
-    libs = set()
-    with open("/proc/self/maps") as maps:
-        for line in maps:
-            path = line.split()[-1]
-            if "openblas" in path and "scipy_openblas" not in path and path.endswith(tuple(".so" + s for s in
-                                                                                           ("", ".0", ".3"))):
-                libs.add(path)
-    for path in sorted(libs):
-        try:
-            lib = ctypes.CDLL(path)
-            lib.openblas_get_config.restype = ctypes.c_char_p
-            lib.openblas_get_corename.restype = ctypes.c_char_p
-            return path, lib.openblas_get_config().decode(), lib.openblas_get_corename().decode(), \
-                lib.openblas_get_num_threads()
-        except (OSError, AttributeError):
-            continue
-    return None
-
-
-def ldd_blas(library_name):
-    """The BLAS/LAPACK libraries a SuiteSparse library resolves to (ldd)."""
-    ext = pathlib.Path(beamsolid.__file__).parent / "libbeamsolid.so"
-    path = None
-    for line in subprocess.run(["ldd", str(ext)], capture_output=True, text=True).stdout.splitlines():
-        if library_name in line and "=>" in line:
-            path = line.split("=>")[1].split()[0]
-    if path is None:
-        return library_name, []
-    out = subprocess.run(["ldd", path], capture_output=True, text=True).stdout.splitlines()
-    deps = [l.strip().split(" (")[0] for l in out if "blas" in l or "lapack" in l]
-    return path, [d + (f"  [-> {os.path.realpath(d.split('=>')[1].strip())}]" if "=>" in d else "") for d in deps]
 
 
 def main():
@@ -256,19 +220,7 @@ def main():
               "unsymmetric soil system.", ""]
 
     # --- BLAS ---------------------------------------------------------------------------------
-    lines += ["## BLAS used by the sparse solvers", ""]
-    for name in ("libumfpack", "libcholmod"):
-        path, deps = ldd_blas(name)
-        lines.append(f"- `ldd {path}`:")
-        lines += [f"  - `{d}`" for d in deps]
-    blas = openblas_in_use()
-    if blas:
-        path, config, core, threads = blas
-        lines += [f"- Loaded at run time: `{path}`: `{config}`, kernel **{core}**, {threads} threads "
-                  f"(OPENBLAS_CORETYPE={os.environ.get('OPENBLAS_CORETYPE', 'unset')}, "
-                  f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS', 'unset')})."]
-    lines += ["- NumPy's own OpenBLAS (`numpy.show_config()`) is a different library and does not run in "
-              "these solves.", ""]
+    lines += machine.blas_report()
     RESULTS.mkdir(parents=True, exist_ok=True)
     out = RESULTS / "contact_element.md"
     out.write_text("\n".join(lines))

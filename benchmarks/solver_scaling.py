@@ -7,14 +7,13 @@ iteration and the ratio. Writes benchmarks/results/solver_scaling.md and a
 PNG chart. Timings depend on the machine and its load; the BLAS that
 SuiteSparse used is recorded (ldd), as is OPENBLAS_CORETYPE.
 """
-import os
 import pathlib
-import subprocess
 import sys
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "python"))
 import beamsolid  # noqa: E402
+import machine  # noqa: E402
 
 OUT = pathlib.Path(__file__).parent / "results"
 
@@ -49,16 +48,6 @@ def block(m, n, system):
     m.analysis("Static")
 
 
-def blas_of(library):
-    try:
-        path = subprocess.run(["ldconfig", "-p"], capture_output=True, text=True).stdout
-        lib = next(line.split("=>")[1].strip() for line in path.splitlines() if library in line)
-        ldd = subprocess.run(["ldd", lib], capture_output=True, text=True).stdout
-        return ", ".join(sorted({l.split()[0] for l in ldd.splitlines() if "blas" in l or "lapack" in l}))
-    except (StopIteration, OSError):
-        return "unknown"
-
-
 def main(sizes=(6, 10, 14, 18)):
     rows = []
     for n in sizes:
@@ -77,13 +66,12 @@ def main(sizes=(6, 10, 14, 18)):
                   f"step {solve:6.3f}s ({iters} iterations, {solve / iters * 1e3:7.1f} ms/iteration)", flush=True)
     OUT.mkdir(exist_ok=True)
     lines = ["# Solver scaling on brick blocks", "",
-             f"OPENBLAS_CORETYPE={os.environ.get('OPENBLAS_CORETYPE', '(unset)')}; "
-             f"CHOLMOD links {blas_of('libcholmod.so')}; UMFPACK links {blas_of('libumfpack.so')}.", "",
              "Command: `make build && PYTHONPATH=python OPENBLAS_CORETYPE=SKYLAKEX .venv/bin/python benchmarks/solver_scaling.py`",
              "", "| n | system | equations | model build (s) | step (s) | iterations | time per iteration (ms) |",
              "|---|---|---|---|---|---|---|"]
     for n, system, eqs, build, solve, iters, per in rows:
         lines.append(f"| {n} | {system} | {eqs} | {build:.2f} | {solve:.3f} | {iters} | {per * 1e3:.1f} |")
+    lines += [""] + machine.blas_report()
     (OUT / "solver_scaling.md").write_text("\n".join(lines) + "\n")
     try:
         import matplotlib
