@@ -629,13 +629,14 @@ def pile_in_soil(ops, *, pile_radius, outer_size, pile_E, pile_G, soil_material,
     (ContactMaterial3D) must exist. The pile is left free: fix or load it as the problem
     needs. Leaves the model builder at ndf 3.
     """
+    levels = _levels("pile_in_soil", levels, z_top, z_bottom, n_z, z_ratio)
+    if pile_tip is not None and _fill_from("pile_in_soil", levels, pile_tip) == 0:
+        raise ValueError(f"pile_in_soil: pile_tip = {pile_tip} is at or above the top level {levels[0]}: no pile")
     ops.model("basic", "-ndm", 3, "-ndf", 3)
     soil = ogrid(ops, pile_radius=pile_radius, outer_size=outer_size, outer=outer, n_theta=n_theta,
-                 n_radial=n_radial, radial_ratio=radial_ratio, levels=levels, z_top=z_top, z_bottom=z_bottom,
-                 n_z=n_z, z_ratio=z_ratio, centre=centre, material_tag=soil_material, first_node=first_node,
-                 first_element=first_element, body_force=body_force, core_below=pile_tip)
-    if pile_tip is not None and soil.tip_level == 0:
-        raise ValueError(f"pile_in_soil: pile_tip = {pile_tip} is at or above the top level: no pile")
+                 n_radial=n_radial, radial_ratio=radial_ratio, levels=levels, centre=centre,
+                 material_tag=soil_material, first_node=first_node, first_element=first_element,
+                 body_force=body_force, core_below=pile_tip)
     fixed = fix_soil_boundary(ops, soil, lateral, base)
     pile = beam_pile(ops, x=centre[0], y=centre[1], levels=soil.pile_levels, radius=pile_radius, E=pile_E,
                      G=pile_G, transf_tag=transf_tag, vecxz=vecxz)

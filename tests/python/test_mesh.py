@@ -324,6 +324,13 @@ def test_bad_arguments_name_the_argument(soil, call, kwargs, word):
     assert soil.getNodeTags() == []  # nothing was built
 
 
+def test_pile_in_soil_refuses_a_tip_at_the_top(soil):
+    with pytest.raises(ValueError, match="pile_tip"):
+        mesh.pile_in_soil(soil, pile_radius=0.5, outer_size=2.0, pile_E=3e7, pile_G=1.25e7, soil_material=1,
+                          contact_material=2, levels=[0.0, -1.0], pile_tip=0.0, n_theta=8, n_radial=2)
+    assert soil.getNodeTags() == []
+
+
 def test_plan_check_refuses_inverted_quads():
     """The safety net behind every builder: a clockwise or degenerate quad would give a
     non-positive brick Jacobian."""
