@@ -1,0 +1,262 @@
+"""The lateral pile with the pile itself meshed in bricks: the expensive reference (issue 5).
+
+The same physical problem as scenes.lateral_pile (class LateralPile), modelled the
+classical way: the pile is a cylinder of stdBrick elements (butterfly cross-section,
+mesh.solid_cylinder) in the hole of the soil O-grid, its surface nodes coincident with
+the soil's. The interface is either
+
+    "tied"     equalDOF of every pile-surface node to its soil node (no gap, no slip), or
+    "contact"  one zeroLengthContact3D per node pair (penalty Kn normal to the pile axis,
+               Kt tangential, Coulomb friction mu), which opens behind the pushed pile.
+
+The head cross-section is made rigid by rigidLink('beam', head, node) to a 6-dof head
+node on the axis, which carries the load; the pile base is fixed like the soil's base.
+The geostatic stage runs with the pile held and the interface frictionless, then the
+friction comes back, the pile is released and the head is pushed along +x.
+
+The bending moment at a level z is found from the free body of the pile above the cut:
+M_y(z) = sum over the interface forces on the pile above z of (z_i - z) F_x - (x_i - x_c) F_z
+plus the head load's moment; exact statics, the same formula as for the beam pile.
+"""
+import math
+import time
+from dataclasses import dataclass, field
+
+from ..geostatic import geostatic_stage
+from ..mesh import fix_soil_boundary, graded, ogrid, solid_cylinder
+from ..model import Model
+from .lateral_pile import LEVELS, LateralPile
+
+SOIL, PILE = 1, 2
+HEAD = 900001  # the rigid head's node
+
+
+def pile_levels(problem, n_z, ratio=None):
+    """Node levels from the surface to the base, finer at the top (first layer about L / (4 n_z))."""
+    ratio = ratio if ratio is not None else 1.0 + 2.4 / n_z
+    return graded(0.0, -problem.length, n_z, ratio)
+
+
+@dataclass(frozen=True)
+class SolidNumerics:
+    level: str = "coarse"
+    interface: str = "contact"  # "contact" | "tied"
+    penalty_factor: float = 1e3  # Kn = Kt = factor x E_soil R (per node pair)
+    control: str = "force"  # "force": head load H in `steps`; "disp": head displacement problem.head_disp
+    head_load: float = 500.0  # kN (control "force")
+    steps: int = 10
+    tol: float = 1e-6
+    max_iter: int = 40
+
+
+@dataclass
+class SolidResult:
+    head_disp: list = field(default_factory=list)
+    head_force: list = field(default_factory=list)
+    iterations: list = field(default_factory=list)
+    z: list = field(default_factory=list)  # levels, top to bottom
+    moment: list = field(default_factory=list)  # M_y at each level, final state
+    deflection: list = field(default_factory=list)  # mean u_x of the pile section at each level
+    n_open: int = 0
+    converged: bool = False
+    n_equations: int = 0
+    n_elements: int = 0
+    build_time: float = 0.0
+    geostatic_time: float = 0.0
+    push_time: float = 0.0
+
+    @property
+    def max_moment(self):
+        return max((abs(v) for v in self.moment), default=0.0)
+
+    @property
+    def wall(self):
+        return self.build_time + self.geostatic_time + self.push_time
+
+
+class SolidPileModel:
+    def __init__(self, problem=LateralPile(), numerics=SolidNumerics(), m=None):
+        self.p, self.n = problem, numerics
+        self.m = m if m is not None else Model()
+        self.pairs = []  # (level, soil node, pile node, element or None)
+
+    def build(self):
+        p, n, m = self.p, self.n, self.m
+        n_theta, n_radial, n_z = LEVELS[n.level]
+        levels = pile_levels(p, n_z)
+        m.wipe()
+        m.model("basic", "-ndm", 3, "-ndf", 3)
+        m.nDMaterial("ElasticIsotropic", SOIL, p.soil_E, p.soil_nu)
+        m.nDMaterial("ElasticIsotropic", PILE, p.pile_E, p.pile_nu)
+        self.soil = ogrid(m, pile_radius=p.pile_radius, outer_size=p.outer_radius, outer="circle", n_theta=n_theta,
+                          n_radial=n_radial, radial_ratio=1.3, levels=levels, material_tag=SOIL,
+                          body_force=(0.0, 0.0, -p.gamma) if n.interface == "contact" else (0.0, 0.0, 0.0))
+        fix_soil_boundary(m, self.soil)
+        self.pile = solid_cylinder(m, radius=p.pile_radius, levels=levels, n_theta=n_theta, material_tag=PILE)
+        base = set(self.pile.groups["base"])
+        for t in base:
+            m.fix(t, 1, 1, 1)
+        self.levels = levels
+        k_pair = n.penalty_factor * p.stiffness_scale
+        tag = max(m.getEleTags()) + 1
+        for k in range(len(levels)):
+            for soil, pile in zip(self.soil.surfaces[0][k], self.pile.surfaces[0][k]):
+                if pile in base:
+                    self.pairs.append((k, soil, pile, None))
+                    continue
+                if n.interface == "tied":
+                    m.equalDOF(pile, soil, 1, 2, 3)
+                    self.pairs.append((k, soil, pile, None))
+                else:
+                    # Soil node constrained, pile node retained; dir 0: normal radial from the axis.
+                    m.element("zeroLengthContact3D", tag, soil, pile, k_pair, k_pair, p.mu, 0.0, 0, 0.0, 0.0)
+                    self.pairs.append((k, soil, pile, tag))
+                    tag += 1
+        m.model("basic", "-ndm", 3, "-ndf", 6)
+        m.node(HEAD, 0.0, 0.0, levels[0])
+        for t in self.pile.groups["top"]:
+            m.rigidLink("beam", HEAD, t)
+        self.contacts = [e for (_, _, _, e) in self.pairs if e is not None]
+        return self
+
+    # --- stages ------------------------------------------------------------------------------
+    def geostatic(self):
+        """Gravity with the pile held and the interface frictionless (contact only: the tied
+        problem is linear, so the weight does not change its lateral response)."""
+        p, m = self.p, self.m
+        if not self.contacts:
+            m.fix(HEAD, 0, 1, 1, 1, 0, 1)
+            return None
+        held = [t for t in self.pile.nodes if t not in set(self.pile.groups["base"])]
+        m.fix(HEAD, 1, 1, 1, 1, 1, 1)  # holds the head face through the rigid links
+        below_head = [t for t in held if t not in set(self.pile.groups["top"])]
+        for t in below_head:
+            m.fix(t, 1, 1, 1)
+        if self.contacts:
+            m.setParameter("-val", 0.0, "-ele", *self.contacts, "friction")
+        state = geostatic_stage(m, soil_elements=self.soil.elements, gamma=p.gamma, K0=p.K0, tol=1e-6,
+                                check_tol=1e-6)
+        if self.contacts:
+            m.setParameter("-val", 1.0, "-ele", *self.contacts, "friction")
+        for t in below_head:
+            for d in (1, 2, 3):
+                m.remove("sp", t, d)
+        for d in (1, 2, 3, 4, 5, 6):
+            m.remove("sp", HEAD, d)
+        m.fix(HEAD, 0, 1, 1, 1, 0, 1)  # pushed along x: keep y, z, torsion and rx (symmetry)
+        return state
+
+    def push(self, r):
+        p, n, m = self.p, self.n, self.m
+        m.timeSeries("Linear", 2)
+        m.pattern("Plain", 2, 2)
+        if n.control == "force":
+            m.load(HEAD, n.head_load, 0.0, 0.0, 0.0, 0.0, 0.0)
+        m.constraints("Transformation")
+        m.numberer("RCM")
+        m.system("UmfPack")
+        m.test("NormDispIncr", n.tol * p.head_disp, n.max_iter)
+        m.algorithm("Newton")
+        if n.control == "force":
+            m.integrator("LoadControl", 1.0 / n.steps)
+        else:
+            m.integrator("DisplacementControl", HEAD, 1, p.head_disp / n.steps)
+        m.analysis("Static")
+        r.n_equations = m.systemSize() if hasattr(m, "systemSize") else 0
+        for _ in range(n.steps):
+            if m.analyze(1) != 0:
+                return r
+            r.iterations.append(m.testIter())
+            r.head_disp.append(m.nodeDisp(HEAD, 1))
+            r.head_force.append(m.getLoadFactor(2) * n.head_load if n.control == "force" else self.head_reaction())
+        r.converged = True
+        return r
+
+    def head_reaction(self):
+        self.m.reactions()
+        return -self.m.nodeReaction(HEAD, 1)
+
+    def interface_forces_on_pile(self):
+        """[(x, y, z, Fx, Fy, Fz)]: the soil's action on each pile-surface node.
+
+        Contact: minus the element's resisting force at the pile node. Tied: minus the soil
+        bricks' resisting forces at the soil node (what the pile exerts on the soil)."""
+        m, out = self.m, []
+        if self.contacts:
+            for k, soil, pile, e in self.pairs:
+                if e is not None:
+                    x, f = m.nodeCoord(pile), m.eleResponse(e, "force")
+                    out.append((x[0], x[1], x[2], -f[3], -f[4], -f[5]))
+            return out
+        surface = {soil for (_, soil, _, _) in self.pairs}
+        acc = {}
+        for e in self.soil.elements:
+            nodes = m.eleNodes(e)
+            if not surface.intersection(nodes):
+                continue
+            f = m.eleForce(e)
+            for a, t in enumerate(nodes):
+                if t in surface:
+                    v = acc.setdefault(t, [0.0, 0.0, 0.0])
+                    for i in range(3):
+                        v[i] -= f[3 * a + i]
+        for t, v in acc.items():
+            x = m.nodeCoord(t)
+            out.append((x[0], x[1], x[2], v[0], v[1], v[2]))
+        return out
+
+    def profiles(self, r, head_force):
+        """Moment about y at each level from the free body above it, and the mean deflection."""
+        m = self.m
+        forces = self.interface_forces_on_pile()
+        r.z = list(self.levels)
+        r.moment = []
+        for z in self.levels:
+            M = head_force * (self.levels[0] - z)  # the head load at z0 acting on the cut at z
+            for (x, y, zi, fx, fy, fz) in forces:
+                if zi > z + 1e-12:
+                    M += (zi - z) * fx - x * fz
+            r.moment.append(M)
+        r.deflection = [sum(m.nodeDisp(t, 1) for t in self.pile.surfaces[0][k]) / len(self.pile.surfaces[0][k])
+                        for k in range(len(self.levels))]
+        if self.contacts:
+            r.n_open = sum(1 for e in self.contacts if m.eleResponse(e, "status")[0] == 0)
+
+
+def run(problem=LateralPile(), numerics=SolidNumerics(), m=None):
+    t0 = time.perf_counter()
+    model = SolidPileModel(problem, numerics, m).build()
+    r = SolidResult(n_elements=len(model.soil.elements) + len(model.pile.elements))
+    t1 = time.perf_counter()
+    model.geostatic()
+    t2 = time.perf_counter()
+    model.push(r)
+    t3 = time.perf_counter()
+    if r.head_force:
+        model.profiles(r, r.head_force[-1])
+    r.build_time, r.geostatic_time, r.push_time = t1 - t0, t2 - t1, t3 - t2
+    model.m.wipe()
+    return r
+
+
+def richardson(hs, values):
+    """Extrapolate values(h) = v0 + C h^p from three levels (h decreasing); returns (v0, p)."""
+    (h1, h2, h3), (f1, f2, f3) = hs, values
+    # Solve (f1 - f2) / (f2 - f3) = (h1^p - h2^p) / (h2^p - h3^p) for p by bisection.
+    target = (f1 - f2) / (f2 - f3)
+
+    def g(p):
+        return (h1**p - h2**p) / (h2**p - h3**p) - target
+
+    lo, hi = 0.05, 8.0
+    if g(lo) * g(hi) > 0:
+        return f3, math.nan
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if g(lo) * g(mid) <= 0:
+            hi = mid
+        else:
+            lo = mid
+    p = 0.5 * (lo + hi)
+    C = (f2 - f3) / (h2**p - h3**p)
+    return f3 - C * h3**p, p
