@@ -152,6 +152,8 @@ class BentResult:
     friction_sum: list = field(default_factory=list)  # per step: per pile, sum of friction magnitudes
     contact_x: list = field(default_factory=list)  # per step: per pile, sum of contact force x on the soil
     contact_y: list = field(default_factory=list)
+    status: list = field(default_factory=list)  # per step: per pile, the contact statuses in element order
+    soil_reaction_x: list = field(default_factory=list)  # per step: x reactions on the soil's x faces
     iterations: list = field(default_factory=list)  # per push step (summed over cuts)
     cuts: list = field(default_factory=list)
     final: list = field(default_factory=list)  # per pile: PileContacts at the last step
@@ -188,6 +190,7 @@ class BentModel:
                                n_padding=d["n_padding"], levels=levels, material_tag=SOIL,
                                body_force=(0.0, 0.0, -s.gamma))
         fix_soil_boundary(m, self.soil, "roller", "roller")
+        self.x_faces = sorted(set(self.soil.groups["xmin"]) | set(self.soil.groups["xmax"]))
         free = graded(s.free_height, 0.0, s.n_free)[:-1]
         below = self.soil.pile_levels
         # A stub below the base: the base-level soil nodes project inside a segment even when
@@ -239,7 +242,7 @@ class BentModel:
         m, s = self.m, self.s
         r.cap_disp.append(m.nodeDisp(self.cap, 1))
         r.cap_force.append(m.getLoadFactor(2) if r.cap_disp[-1] != 0.0 else 0.0)
-        shear, n_open, depth, gmax, nsum, fsum, fx, fy = [], [], [], [], [], [], [], []
+        shear, n_open, depth, gmax, nsum, fsum, fx, fy, status = [], [], [], [], [], [], [], [], []
         for p, pile in enumerate(self.piles):
             shear.append(m.eleResponse(pile.elements[0], "force")[0])
             c = self.pile_contacts(p)
@@ -251,6 +254,7 @@ class BentModel:
             fsum.append(sum(math.sqrt(sum(v * v for v in m.eleResponse(e, "frictionforce"))) for e in c.elements))
             fx.append(sum(c.force_x))
             fy.append(sum(c.force_y))
+            status.append(c.status)
         r.head_shear.append(shear)
         r.open_contacts.append(n_open)
         r.gap_depth.append(depth)
@@ -259,6 +263,10 @@ class BentModel:
         r.friction_sum.append(fsum)
         r.contact_x.append(fx)
         r.contact_y.append(fy)
+        r.status.append(status)
+        # The soil's x faces carry the push (bricks only: an independent path from the contacts).
+        m.reactions()
+        r.soil_reaction_x.append(sum(m.nodeReaction(n, 1) for n in self.x_faces))
 
     # --- stages -----------------------------------------------------------------
     def geostatic(self, r):
@@ -318,7 +326,6 @@ class BentModel:
             r.iterations.append(iters)
             r.cuts.append(cuts)
             self.record(r)
-        m.reactions()
 
     def recorders(self, out, r):
         m = self.m
