@@ -185,7 +185,8 @@ class LateralResult:
     z: list = field(default_factory=list)  # pile node elevations, head first
     deflection: list = field(default_factory=list)  # u_x at the pile nodes
     moment: list = field(default_factory=list)  # M_y at the pile nodes (see bending_moments)
-    head_moment: float = 0.0  # beam end moment at the head (free head: ~0)
+    head_moment: float = 0.0  # beam end moment at the head (free head: only the contacts' moment on the head node)
+    head_contact_moment: float = 0.0  # M_y the contacts apply to the head node (friction at radius R)
     tip_reaction: tuple = (0.0, 0.0, 0.0)  # pinned tip, global
     pile_contact_force: tuple = None  # summed contact forces acting on the pile (global); None if tied
     interface: object = None  # beamsolid.contact.InterfaceForces (None if tied)
@@ -313,13 +314,13 @@ class LateralPileModel:
                                         penalty=penalty, first_element=FIRST_CONTACT, first_node=FIRST_CONTACT)
         return self
 
-    def _analysis(self, dt):
+    def _analysis(self, dt, algorithm):
         n, m = self.n, self.m
         m.constraints("Transformation")
         m.numberer("RCM")
         m.system("UmfPack")
         m.test("NormUnbalance", n.tol, n.max_iter)
-        m.algorithm(n.algorithm)
+        m.algorithm(algorithm)
         m.integrator("LoadControl", dt)
         m.analysis("Static")
 
@@ -329,7 +330,7 @@ class LateralPileModel:
         m = self.m
         if self.iface is not None:
             m.updateMaterialStage("-material", CONTACT, "-stage", 0)
-        self._analysis(1.0)
+        self._analysis(1.0, "Newton")  # a linear problem: the push's algorithm is not needed here
         if m.analyze(1) != 0:
             raise RuntimeError("lateral_pile: the geostatic stage did not converge")
 
@@ -351,7 +352,7 @@ class LateralPileModel:
         m.timeSeries("Path", TS_PUSH, "-time", *times, "-values", *values)
         m.pattern("Plain", PAT_PUSH, TS_PUSH)
         m.sp(head, 1, 1.0)
-        self._analysis(1.0 / self.n.steps)
+        self._analysis(1.0 / self.n.steps, self.n.algorithm)
 
     def add_recorders(self, out):
         """Node, Element (OpenSees text format) and PVD recorders of the push into `out`."""
@@ -427,6 +428,11 @@ class LateralPileModel:
                 for i in range(3):
                     total[i] += f[i] + f[3 + i]
             r.pile_contact_force = tuple(total)
+            head = self.pile_nodes[0]
+            for e in self.iface.elements:
+                i, j = (int(t) for t in m.eleResponse(e, "segment"))
+                if head in (i, j):
+                    r.head_contact_moment += m.eleResponse(e, "mastermoment")[1 if i == head else 4]
             r.interface = interface_forces(m, self.iface)
 
 
