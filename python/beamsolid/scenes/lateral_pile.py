@@ -361,7 +361,7 @@ class LateralPileModel:
         out = pathlib.Path(out)
         out.mkdir(parents=True, exist_ok=True)
         m, head = self.m, self.pile_nodes[0]
-        m.recorder("Node", "-file", str(out / "head.out"), "-time", "-node", head, "-dof", 1, "disp", "reaction")
+        m.recorder("Node", "-file", str(out / "head_reaction.out"), "-time", "-node", head, "-dof", 1, "reaction")
         m.recorder("Node", "-file", str(out / "pile_disp.out"), "-time", "-node", *self.pile_nodes, "-dof", 1,
                    "disp")
         m.recorder("Element", "-file", str(out / "pile_forces.out"), "-time", "-ele", *self.beams, "localForce")
@@ -439,7 +439,7 @@ class LateralPileModel:
 def run(problem=LateralPile(), numerics=Numerics(), m=None, out=None, record=False):
     """Geostatic stage, release and the lateral push (monotonic or cyclic) of one pile.
 
-    With record=True (and an `out` directory) the push is recorded: head.out, pile_disp.out,
+    With record=True (and an `out` directory) the push is recorded: head_reaction.out, pile_disp.out,
     pile_forces.out (OpenSees text, with JSON sidecars) and lateral_pile.pvd."""
     t0 = time.perf_counter()
     model = LateralPileModel(problem, numerics, m).build()
@@ -467,3 +467,118 @@ def run(problem=LateralPile(), numerics=Numerics(), m=None, out=None, record=Fal
     model.m.wipe()  # closes the recorders
     r.timings = dict(build=t1 - t0, geostatic=t2 - t1, push=t3 - t2, total=time.perf_counter() - t0)
     return r
+
+
+# =====================================================================================
+# The scene: python -m beamsolid.scenes lateral_pile --level coarse|medium|fine
+# =====================================================================================
+def _plots(out, main, tied, problem):
+    """PNG plots of the curves; returns the files written."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    files = []
+    label = f"{main.numerics.interface} (mu = {problem.mu:g})"
+    fig, ax = plt.subplots(figsize=(6.0, 4.4))
+    ax.plot([1e3 * u for u in main.head_disp], main.head_force, "o-", ms=3, label=label)
+    ax.plot([1e3 * u for u in tied.head_disp], tied.head_force, "s--", ms=3, label="tied (bonded)")
+    span = (min(main.head_disp), max(main.head_disp))
+    ax.plot([1e3 * u for u in span], [u / problem.randolph_compliance for u in span], "k:", lw=1,
+            label="Randolph (1981), bonded")
+    ax.set_xlabel("head displacement (mm)")
+    ax.set_ylabel("head force H (kN)")
+    ax.set_title("Lateral pile: head load-displacement")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    files.append(out / "head_load_displacement.png")
+    fig.savefig(files[-1], dpi=120)
+    plt.close(fig)
+
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.2, 5.0), sharey=True)
+    for r, style, name in ((main, "o-", label), (tied, "s--", "tied")):
+        a1.plot([1e3 * u for u in r.deflection], r.z, style, ms=3, label=name)
+        a2.plot(r.moment, r.z, style, ms=3, label=name)
+    a1.set_xlabel("deflection u_x (mm)")
+    a1.set_ylabel("z (m)")
+    a2.set_xlabel("bending moment M_y (kNm)")
+    for a in (a1, a2):
+        a.grid(alpha=0.3)
+        a.axvline(0.0, color="k", lw=0.5)
+    a1.legend(fontsize=8)
+    fig.suptitle(f"Pile profiles at the last state (head displacement {1e3 * main.head_disp[-1]:.1f} mm)")
+    fig.tight_layout()
+    files.append(out / "profiles.png")
+    fig.savefig(files[-1], dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(6.0, 4.4))
+    ax.plot([1e3 * u for u in main.head_disp], main.gap_depth_back, "o-", ms=3, label="x < 0 side (behind a +x push)")
+    if any(main.gap_depth_front):
+        ax.plot([1e3 * u for u in main.head_disp], main.gap_depth_front, "s-", ms=3, label="x > 0 side")
+    ax.set_xlabel("head displacement (mm)")
+    ax.set_ylabel("gap depth (m)")
+    ax.invert_yaxis()
+    ax.set_title("Depth of the gap behind the pile")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    files.append(out / "gap_depth.png")
+    fig.savefig(files[-1], dpi=120)
+    plt.close(fig)
+    return files
+
+
+def _rows(r, count=5):
+    """Indices of about `count` states spread over the run (always the last)."""
+    n = len(r.head_disp)
+    picks = sorted({round(k * (n - 1) / (count - 1)) for k in range(count)}) if n > 1 else [0]
+    return picks
+
+
+def scene(level="coarse", out="lateral_pile_output", adaptive=False, steps=None, interface="contact",
+          protocol="monotonic", cycles=2, algorithm="Newton", problem=LateralPile()):
+    """Run the scene: the bonded (tied) reference, then the chosen interface with recorders;
+    print the table, save the plots. Returns (result, tied result, files written)."""
+    import pathlib
+
+    out = pathlib.Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    t0 = time.perf_counter()
+    numerics = Numerics(level=level, interface=interface, protocol=protocol, cycles=cycles, algorithm=algorithm,
+                        adaptive=adaptive, **({} if steps is None else {"steps": steps}))
+    # The tied model is linear: two steps give its compliance (and a curve to plot).
+    tied = run(problem, Numerics(level=level, interface="tied", steps=2))
+    main = run(problem, numerics, out=out, record=True)
+
+    n_theta, n_radial, n_z = LEVELS[level]
+    print(f"lateral_pile ({level}: soil O-grid {n_theta} x {n_radial} x {n_z} stdBricks, {n_z} pile elements, "
+          f"{main.n_contacts} contacts, {main.n_equations} equations); units kN, m")
+    print(f"  pile R = {problem.pile_radius:g}, L = {problem.length:g}, E = {problem.pile_E:.3g}; soil E = "
+          f"{problem.soil_E:.3g}, nu = {problem.soil_nu:g}, gamma = {problem.gamma:g}, R_out = "
+          f"{problem.outer_radius:g}; mu = {problem.mu:g}; interface {interface}, {numerics.algorithm}, "
+          f"{protocol}, {numerics.steps} steps{' per quarter cycle' if protocol == 'cyclic' else ''}"
+          f"{', adaptive' if adaptive else ''}")
+    print(f"\n{'time':>6s}{'u_head mm':>11s}{'H kN':>10s}{'iters':>7s}{'gap m':>8s}{'open':>6s}{'penetr. m':>11s}")
+    for k in _rows(main, 6 if protocol == "monotonic" else 9):
+        print(f"{main.time[k]:6.2f}{1e3 * main.head_disp[k]:11.3f}{main.head_force[k]:10.2f}{main.iterations[k]:7d}"
+              f"{main.gap_depth[k]:8.2f}{main.n_open[k]:6d}{main.max_penetration[k]:11.1e}")
+    status = "reached the end" if main.converged else f"STOPPED at time {main.failed_at}"
+    print(f"  {status}; {len(main.iterations) - 1} steps, {sum(main.iterations)} iterations, "
+          f"{main.steps_cut} cuts; push {main.timings['push']:.1f} s")
+    print(f"\nbonded head compliance u/H: tied {tied.compliance:.4e} m/kN, Randolph (1981) "
+          f"{problem.randolph_compliance:.4e} m/kN, ratio {tied.randolph_ratio:.3f}")
+    if main.converged and main.head_disp[-1] != 0.0:
+        print(f"secant compliance of the {interface} model at the last state: {main.compliance:.4e} m/kN "
+              f"({main.compliance / tied.compliance:.3f} x tied)")
+    print(f"gap depth behind the pile at the last state: {main.gap_depth[-1]:.2f} m "
+          f"(lc = {problem.critical_length:.2f} m)")
+    files = [out / "head_reaction.out", out / "pile_disp.out", out / "pile_forces.out", out / "lateral_pile.pvd"]
+    try:
+        files += _plots(out, main, tied, problem)
+    except ImportError:
+        print("matplotlib not installed: no plots")
+    print(f"\nwrote {', '.join(f.name for f in files)} in {out}; wall time {time.perf_counter() - t0:.1f} s")
+    return main, tied, files
