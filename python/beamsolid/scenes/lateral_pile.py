@@ -97,3 +97,488 @@ class LateralPile:
     def randolph_compliance(self):
         """u / H at ground level for a lateral load alone (m/kN)."""
         return self.randolph_head(1.0)[0]
+
+
+# =====================================================================================
+# The model: numerical choices, the run, its result.
+# =====================================================================================
+import time
+from dataclasses import field
+
+from ..contact import interface_forces, pile_interface
+from ..mesh import DonutMesh, graded
+from ..model import Model
+from ..stepping import adaptive_analyze
+
+# Grading shared by every level (only the number of intervals changes with the level):
+# radii in geometric progression R .. R_out (equal aspect ratio of the soil cells in plan),
+# vertical intervals growing geometrically with depth, the deepest VERTICAL_GROWTH times the
+# shallowest (the pile bends within the top lc ~ 10 m; the surface is where the gap opens).
+VERTICAL_GROWTH = 6.0
+
+SOIL, CONTACT = 1, 2  # material tags
+TRANSF = 1
+TS_PUSH, PAT_PUSH = 2, 2
+FIRST_SOIL_NODE = 1001
+FIRST_CONTACT = 200001  # element tags; multiplier node tags alike
+
+
+@dataclass(frozen=True)
+class Numerics:
+    """Numerical choices of one lateral pile run."""
+
+    level: str = "coarse"  # key of LEVELS
+    interface: str = "contact"  # "contact" (BeamContact3D) | "penalty" (BeamContact3Dp) | "tied" (rigidLink)
+    penalty_factor: float = 1e3  # penalty = penalty_factor * problem.stiffness_scale ("penalty")
+    # Stick stiffness of ContactMaterial3D (kN per m of elastic slip, per contact node). Ideally
+    # stiff relative to the soil (E_soil h ~ 1e4 kN/m per surface node here) so that a sticking
+    # node does not slip; but the Lagrange form (BeamContact3D) then cycles in Newton between
+    # sliding up and down at the nodes near the ground surface, whose normal force is ~0
+    # (sigma_h = K0 gamma z): G >= 1e4 fails at the first step with any step size, G <= 3e3
+    # converges. The default is the paper's G = 1000 (as the donut pullout); the head force at
+    # 20 mm is 9 % below the penalty form's with G = 1e6 (docs/lateral_pile.md).
+    contact_G: float = 1e3
+    algorithm: str = "Newton"  # "Newton" | "NewtonLineSearch" | "KrylovNewton"
+    steps: int = 20  # steps to reach head_disp (monotonic), or per quarter cycle (cyclic)
+    protocol: str = "monotonic"  # "monotonic" | "cyclic"
+    cycles: int = 2  # cyclic: full cycles 0 -> +d -> 0 -> -d -> 0 (peaks +d, -d, +d, ...)
+    adaptive: bool = False  # cut the step on failure (halve), grow it back (double) after easy steps
+    min_fraction: float = 1.0 / 64  # adaptive: smallest step, as a fraction of the nominal one
+    tol: float = 1e-6  # NormUnbalance (kN; the multiplier rows in m)
+    max_iter: int = 25
+
+    def __post_init__(self):
+        if self.level not in LEVELS:
+            raise ValueError(f"lateral_pile: level must be one of {sorted(LEVELS)}, got {self.level!r}")
+        if self.interface not in ("contact", "penalty", "tied"):
+            raise ValueError(f"lateral_pile: interface must be 'contact', 'penalty' or 'tied', got {self.interface!r}")
+        if self.algorithm not in ("Newton", "NewtonLineSearch", "KrylovNewton"):
+            raise ValueError(f"lateral_pile: unknown algorithm {self.algorithm!r}")
+        if self.protocol not in ("monotonic", "cyclic"):
+            raise ValueError(f"lateral_pile: protocol must be 'monotonic' or 'cyclic', got {self.protocol!r}")
+        if self.steps < 1 or self.cycles < 1:
+            raise ValueError("lateral_pile: steps and cycles must be at least 1")
+
+
+@dataclass
+class LateralResult:
+    """Curves (one entry per converged push step, the first entry the state after release)
+    and final profiles of one run."""
+
+    problem: LateralPile
+    numerics: Numerics
+    time: list = field(default_factory=list)  # pseudo time of the protocol (quarter cycles)
+    head_disp: list = field(default_factory=list)  # m, +x
+    head_force: list = field(default_factory=list)  # kN, the imposed displacement's reaction, +x
+    iterations: list = field(default_factory=list)  # Newton iterations (0 for the initial state)
+    gap_depth: list = field(default_factory=list)  # trailing side (behind the motion): deepest open node, m
+    gap_depth_back: list = field(default_factory=list)  # x < 0 side
+    gap_depth_front: list = field(default_factory=list)  # x > 0 side
+    max_penetration: list = field(default_factory=list)  # largest -gap of a node in contact, m
+    n_open: list = field(default_factory=list)  # contacts open (status 0)
+    n_sliding: list = field(default_factory=list)
+    converged: bool = False
+    failed_at: float = None  # protocol time of the last converged state when the run stopped
+    steps_cut: int = 0
+    steps_grown: int = 0
+    # Final state.
+    z: list = field(default_factory=list)  # pile node elevations, head first
+    deflection: list = field(default_factory=list)  # u_x at the pile nodes
+    moment: list = field(default_factory=list)  # M_y at the pile nodes (see bending_moments)
+    head_moment: float = 0.0  # beam end moment at the head (free head: only the contacts' moment on the head node)
+    head_contact_moment: float = 0.0  # M_y the contacts apply to the head node (friction at radius R)
+    tip_reaction: tuple = (0.0, 0.0, 0.0)  # pinned tip, global
+    pile_contact_force: tuple = None  # summed contact forces acting on the pile (global); None if tied
+    interface: object = None  # beamsolid.contact.InterfaceForces (None if tied)
+    n_equations: int = 0
+    n_contacts: int = 0
+    timings: dict = field(default_factory=dict)  # build, geostatic, push, total (s, wall)
+
+    @property
+    def compliance(self):
+        """Secant head compliance u/H of the last state (m/kN)."""
+        return self.head_disp[-1] / self.head_force[-1]
+
+    @property
+    def randolph_ratio(self):
+        return self.compliance / self.problem.randolph_compliance
+
+
+def soil_levels(problem, n_z):
+    """Node elevations of the soil (and of the pile), ground surface first."""
+    ratio = VERTICAL_GROWTH ** (1.0 / (n_z - 1)) if n_z > 1 else 1.0
+    return graded(0.0, -problem.length, n_z, ratio)
+
+
+def soil_radii(problem, n_radial):
+    return graded(problem.pile_radius, problem.outer_radius, n_radial,
+                  (problem.outer_radius / problem.pile_radius) ** (1.0 / n_radial))
+
+
+def _ogrid(m, radii, levels, n_theta, material_tag, first_node, first_element, body_force):
+    """An O-grid of stdBricks like beamsolid.mesh.donut, on given radii and node levels.
+
+    (donut spaces its levels evenly; this scene needs them graded. To be replaced by the
+    mesh module's general O-grid once it has one.)"""
+    mesh = DonutMesh(n_theta=n_theta, radii=list(radii), levels=list(levels))
+    tag = first_node
+    for k, z in enumerate(levels):
+        for j, r in enumerate(radii):
+            for i in range(n_theta):
+                theta = 2.0 * math.pi * i / n_theta
+                m.node(tag, r * math.cos(theta), r * math.sin(theta), z)
+                mesh.nodes[(i, j, k)] = tag
+                tag += 1
+    n_r, n_z = len(radii) - 1, len(levels) - 1
+    for k in range(n_z + 1):
+        mesh.inner_nodes.extend(mesh.nodes[(i, 0, k)] for i in range(n_theta))
+        mesh.outer_nodes.extend(mesh.nodes[(i, n_r, k)] for i in range(n_theta))
+    mesh.top_nodes = [mesh.nodes[(i, j, 0)] for j in range(n_r + 1) for i in range(n_theta)]
+    mesh.base_nodes = [mesh.nodes[(i, j, n_z)] for j in range(n_r + 1) for i in range(n_theta)]
+    ele = first_element
+    for k in range(n_z):
+        for j in range(n_r):
+            for i in range(n_theta):
+                ip = (i + 1) % n_theta
+                c = [mesh.nodes[q] for q in ((i, j, k + 1), (i, j + 1, k + 1), (ip, j + 1, k + 1), (ip, j, k + 1),
+                                             (i, j, k), (i, j + 1, k), (ip, j + 1, k), (ip, j, k))]
+                m.element("stdBrick", ele, *c, material_tag, *body_force)
+                mesh.elements.append(ele)
+                ele += 1
+    return mesh
+
+
+def protocol_path(problem, numerics):
+    """(times, head displacements) of the loading protocol; one time unit per quarter cycle."""
+    d = problem.head_disp
+    if numerics.protocol == "monotonic":
+        return [0.0, 1.0], [0.0, d]
+    times, values = [0.0], [0.0]
+    for _ in range(numerics.cycles):
+        times += [times[-1] + 1.0, times[-1] + 3.0, times[-1] + 4.0]
+        values += [d, -d, 0.0]
+    return times, values
+
+
+class LateralPileModel:
+    """Builds the lateral pile model in `m` (a beamsolid.Model) and runs its stages."""
+
+    def __init__(self, problem=LateralPile(), numerics=Numerics(), m=None):
+        self.p, self.n = problem, numerics
+        self.m = m if m is not None else Model()
+        self.pile_nodes, self.beams, self.iface, self.mesh = [], [], None, None
+        self.contact_soil = []  # soil nodes on the pile surface (all levels but the base)
+        self._x = {}  # soil node -> reference x (trailing side test)
+
+    # --- build ----------------------------------------------------------------
+    def build(self):
+        p, n, m = self.p, self.n, self.m
+        n_theta, n_radial, n_z = LEVELS[n.level]
+        levels = soil_levels(p, n_z)
+        m.wipe()
+        m.model("basic", "-ndm", 3, "-ndf", 6)
+        self.pile_nodes = list(range(1, n_z + 2))
+        for tag, z in zip(self.pile_nodes, levels):
+            m.node(tag, 0.0, 0.0, z)
+        # Local z = global x: the push bends the pile about local y = global y.
+        m.geomTransf("Linear", TRANSF, 1.0, 0.0, 0.0)
+        I = p.inertia
+        self.beams = list(range(1, n_z + 1))
+        for e in self.beams:
+            m.element("elasticBeamColumn", e, e, e + 1, p.area, p.pile_E, p.pile_G, 2.0 * I, I, I, TRANSF)
+        for tag in self.pile_nodes:
+            m.fix(tag, 1, 1, 1, 1, 1, 1)  # geostatic stage: the pile is held
+
+        m.model("basic", "-ndm", 3, "-ndf", 3)
+        m.nDMaterial("ElasticIsotropic", SOIL, p.soil_E, p.soil_nu)
+        self.mesh = mesh = _ogrid(m, soil_radii(p, n_radial), levels, n_theta, SOIL, FIRST_SOIL_NODE,
+                                  FIRST_SOIL_NODE, (0.0, 0.0, -p.gamma))
+        flags = {t: [1, 1, 0] for t in mesh.outer_nodes}
+        for t in mesh.base_nodes:
+            flags[t] = [1, 1, 1]
+        for t, f in flags.items():
+            m.fix(t, *f)
+
+        # The base ring is fixed and the tip pinned: no interface there (a multiplier on fixed
+        # dofs only would make the system singular).
+        self.contact_soil = mesh.inner_nodes[:n_theta * n_z]
+        self._x = {t: m.nodeCoord(t, 1) for t in self.contact_soil}
+        if n.interface == "tied":
+            for k in range(n_z):
+                for i in range(n_theta):
+                    m.rigidLink("beam", self.pile_nodes[k], mesh.nodes[(i, 0, k)])
+        else:
+            m.nDMaterial("ContactMaterial3D", CONTACT, p.mu, n.contact_G, 0.0, 0.0)
+            penalty = n.penalty_factor * p.stiffness_scale if n.interface == "penalty" else None
+            self.iface = pile_interface(m, self.pile_nodes, self.contact_soil, p.pile_radius, TRANSF, CONTACT,
+                                        penalty=penalty, first_element=FIRST_CONTACT, first_node=FIRST_CONTACT)
+        return self
+
+    def _analysis(self, dt, algorithm):
+        n, m = self.n, self.m
+        m.constraints("Transformation")
+        m.numberer("RCM")
+        m.system("UmfPack")
+        m.test("NormUnbalance", n.tol, n.max_iter)
+        m.algorithm(algorithm)
+        m.integrator("LoadControl", dt)
+        m.analysis("Static")
+
+    # --- stages -----------------------------------------------------------------
+    def geostatic(self):
+        """Self weight with the pile held and frictionless contacts (uniaxial strain)."""
+        m = self.m
+        if self.iface is not None:
+            m.updateMaterialStage("-material", CONTACT, "-stage", 0)
+        self._analysis(1.0, "Newton")  # a linear problem: the push's algorithm is not needed here
+        if m.analyze(1) != 0:
+            raise RuntimeError("lateral_pile: the geostatic stage did not converge")
+
+    def release(self):
+        """Friction on; the pile free but for its pinned tip and the torsion at its head; the
+        head displacement along x imposed by the protocol's Path series."""
+        m = self.m
+        m.loadConst("-time", 0.0)
+        m.wipeAnalysis()
+        if self.iface is not None:
+            m.updateMaterialStage("-material", CONTACT, "-stage", 1)
+        head, tip = self.pile_nodes[0], self.pile_nodes[-1]
+        for tag in self.pile_nodes:
+            for dof in range(1, 7):
+                keep = (tag == tip and dof <= 3) or (tag == head and dof == 6)
+                if not keep:
+                    m.remove("sp", tag, dof)
+        times, values = protocol_path(self.p, self.n)
+        m.timeSeries("Path", TS_PUSH, "-time", *times, "-values", *values)
+        m.pattern("Plain", PAT_PUSH, TS_PUSH)
+        m.sp(head, 1, 1.0)
+        self._analysis(1.0 / self.n.steps, self.n.algorithm)
+
+    def add_recorders(self, out):
+        """Node, Element (OpenSees text format) and PVD recorders of the push into `out`."""
+        import pathlib
+
+        out = pathlib.Path(out)
+        out.mkdir(parents=True, exist_ok=True)
+        m, head = self.m, self.pile_nodes[0]
+        m.recorder("Node", "-file", str(out / "head_reaction.out"), "-time", "-node", head, "-dof", 1, "reaction")
+        m.recorder("Node", "-file", str(out / "pile_disp.out"), "-time", "-node", *self.pile_nodes, "-dof", 1,
+                   "disp")
+        m.recorder("Element", "-file", str(out / "pile_forces.out"), "-time", "-ele", *self.beams, "localForce")
+        m.recorder("PVD", str(out / "lateral_pile"))
+
+    # --- queries ----------------------------------------------------------------
+    def contact_state(self):
+        """(gap depth on the x<0 side, on the x>0 side, open, sliding, max penetration)."""
+        if self.iface is None:
+            return 0.0, 0.0, 0, 0, 0.0
+        m, tol = self.m, 1e-9 * self.p.pile_radius
+        back = front = 0.0
+        n_open = n_slide = 0
+        penetration = 0.0
+        for s in self.contact_soil:
+            e = self.iface.element_of[s]
+            status = m.eleResponse(e, "status")[0]
+            if status == 0.0:
+                n_open += 1
+                depth, x = -m.nodeCoord(s, 3), self._x[s]
+                if x < -tol:
+                    back = max(back, depth)
+                elif x > tol:
+                    front = max(front, depth)
+            else:
+                n_slide += status == 2.0
+                penetration = max(penetration, -m.eleResponse(e, "gap")[0])
+        return back, front, n_open, n_slide, penetration
+
+    def bending_moments(self):
+        """M_y at the pile nodes: the moment about +y of the forces acting on the pile above the
+        section, M = sum (z_F - z) F_x (positive below a head pushed along +x). From the beams'
+        localForce (local y = global y): My at end 1 of the element below the node, end 2 for the tip."""
+        forces = [self.m.eleResponse(e, "localForce") for e in self.beams]
+        return [f[4] for f in forces] + [-forces[-1][10]]
+
+    def record(self, r, t, iterations):
+        m, head = self.m, self.pile_nodes[0]
+        m.reactions()
+        r.time.append(t)
+        r.head_disp.append(m.nodeDisp(head, 1))
+        r.head_force.append(m.nodeReaction(head, 1))
+        r.iterations.append(iterations)
+        back, front, n_open, n_slide, penetration = self.contact_state()
+        r.gap_depth_back.append(back)
+        r.gap_depth_front.append(front)
+        r.gap_depth.append(back if r.head_disp[-1] >= 0.0 else front)
+        r.n_open.append(n_open)
+        r.n_sliding.append(n_slide)
+        r.max_penetration.append(penetration)
+
+    def finish(self, r):
+        m = self.m
+        m.reactions()
+        r.z = [m.nodeCoord(t, 3) for t in self.pile_nodes]
+        r.deflection = [m.nodeDisp(t, 1) for t in self.pile_nodes]
+        r.moment = self.bending_moments()
+        r.head_moment = r.moment[0]
+        r.tip_reaction = tuple(m.nodeReaction(self.pile_nodes[-1], d) for d in (1, 2, 3))
+        if self.iface is not None:
+            total = [0.0, 0.0, 0.0]
+            for e in self.iface.elements:
+                f = m.eleResponse(e, "masterforce")
+                for i in range(3):
+                    total[i] += f[i] + f[3 + i]
+            r.pile_contact_force = tuple(total)
+            head = self.pile_nodes[0]
+            for e in self.iface.elements:
+                i, j = (int(t) for t in m.eleResponse(e, "segment"))
+                if head in (i, j):
+                    r.head_contact_moment += m.eleResponse(e, "mastermoment")[1 if i == head else 4]
+            r.interface = interface_forces(m, self.iface)
+
+
+def run(problem=LateralPile(), numerics=Numerics(), m=None, out=None, record=False):
+    """Geostatic stage, release and the lateral push (monotonic or cyclic) of one pile.
+
+    With record=True (and an `out` directory) the push is recorded: head_reaction.out, pile_disp.out,
+    pile_forces.out (OpenSees text, with JSON sidecars) and lateral_pile.pvd."""
+    t0 = time.perf_counter()
+    model = LateralPileModel(problem, numerics, m).build()
+    r = LateralResult(problem=problem, numerics=numerics,
+                      n_contacts=len(model.iface.elements) if model.iface else 0)
+    t1 = time.perf_counter()
+    model.geostatic()
+    t2 = time.perf_counter()
+    model.release()
+    r.n_equations = int(model.m.systemSize())
+    if record:
+        if out is None:
+            raise ValueError("lateral_pile.run: record=True needs an out directory")
+        model.add_recorders(out)
+    model.record(r, 0.0, 0)
+    times, _ = protocol_path(problem, numerics)
+    stepper = adaptive_analyze(model.m, times[-1], numerics.steps * int(round(times[-1])),
+                               adaptive=numerics.adaptive, min_fraction=numerics.min_fraction,
+                               breakpoints=times[1:-1], on_step=lambda t, it: model.record(r, t, it))
+    t3 = time.perf_counter()
+    r.converged = stepper.converged
+    r.failed_at = None if stepper.converged else stepper.failed_at
+    r.steps_cut, r.steps_grown = stepper.cuts, stepper.grows
+    model.finish(r)
+    model.m.wipe()  # closes the recorders
+    r.timings = dict(build=t1 - t0, geostatic=t2 - t1, push=t3 - t2, total=time.perf_counter() - t0)
+    return r
+
+
+# =====================================================================================
+# The scene: python -m beamsolid.scenes lateral_pile --level coarse|medium|fine
+# =====================================================================================
+def _plots(out, main, tied, problem):
+    """PNG plots of the curves; returns the files written."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    files = []
+    label = f"{main.numerics.interface} (mu = {problem.mu:g})"
+    fig, ax = plt.subplots(figsize=(6.0, 4.4))
+    ax.plot([1e3 * u for u in main.head_disp], main.head_force, "o-", ms=3, label=label)
+    ax.plot([1e3 * u for u in tied.head_disp], tied.head_force, "s--", ms=3, label="tied (bonded)")
+    span = (min(main.head_disp), max(main.head_disp))
+    ax.plot([1e3 * u for u in span], [u / problem.randolph_compliance for u in span], "k:", lw=1,
+            label="Randolph (1981), bonded")
+    ax.set_xlabel("head displacement (mm)")
+    ax.set_ylabel("head force H (kN)")
+    ax.set_title("Lateral pile: head load-displacement")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    files.append(out / "head_load_displacement.png")
+    fig.savefig(files[-1], dpi=120)
+    plt.close(fig)
+
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.2, 5.0), sharey=True)
+    for r, style, name in ((main, "o-", label), (tied, "s--", "tied")):
+        a1.plot([1e3 * u for u in r.deflection], r.z, style, ms=3, label=name)
+        a2.plot(r.moment, r.z, style, ms=3, label=name)
+    a1.set_xlabel("deflection u_x (mm)")
+    a1.set_ylabel("z (m)")
+    a2.set_xlabel("bending moment M_y (kNm)")
+    for a in (a1, a2):
+        a.grid(alpha=0.3)
+        a.axvline(0.0, color="k", lw=0.5)
+    a1.legend(fontsize=8)
+    fig.suptitle(f"Pile profiles at the last state (head displacement {1e3 * main.head_disp[-1]:.1f} mm)")
+    fig.tight_layout()
+    files.append(out / "profiles.png")
+    fig.savefig(files[-1], dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(6.0, 4.4))
+    ax.plot([1e3 * u for u in main.head_disp], main.gap_depth_back, "o-", ms=3, label="x < 0 side (behind a +x push)")
+    if any(main.gap_depth_front):
+        ax.plot([1e3 * u for u in main.head_disp], main.gap_depth_front, "s-", ms=3, label="x > 0 side")
+    ax.set_xlabel("head displacement (mm)")
+    ax.set_ylabel("gap depth (m)")
+    ax.invert_yaxis()
+    ax.set_title("Depth of the gap behind the pile")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    files.append(out / "gap_depth.png")
+    fig.savefig(files[-1], dpi=120)
+    plt.close(fig)
+    return files
+
+
+def _rows(r, count=5):
+    """Indices of about `count` states spread over the run (always the last)."""
+    n = len(r.head_disp)
+    picks = sorted({round(k * (n - 1) / (count - 1)) for k in range(count)}) if n > 1 else [0]
+    return picks
+
+
+def scene(level="coarse", out="lateral_pile_output", adaptive=False, steps=None, interface="contact",
+          protocol="monotonic", cycles=2, algorithm="Newton", problem=LateralPile()):
+    """Run the scene: the bonded (tied) reference, then the chosen interface with recorders;
+    print the table, save the plots. Returns (result, tied result, files written)."""
+    import pathlib
+
+    out = pathlib.Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    t0 = time.perf_counter()
+    numerics = Numerics(level=level, interface=interface, protocol=protocol, cycles=cycles, algorithm=algorithm,
+                        adaptive=adaptive, **({} if steps is None else {"steps": steps}))
+    # The tied model is linear: two steps give its compliance (and a curve to plot).
+    tied = run(problem, Numerics(level=level, interface="tied", steps=2))
+    main = run(problem, numerics, out=out, record=True)
+
+    n_theta, n_radial, n_z = LEVELS[level]
+    print(f"lateral_pile ({level}: soil O-grid {n_theta} x {n_radial} x {n_z} stdBricks, {n_z} pile elements, "
+          f"{main.n_contacts} contacts, {main.n_equations} equations); units kN, m")
+    print(f"  pile R = {problem.pile_radius:g}, L = {problem.length:g}, E = {problem.pile_E:.3g}; soil E = "
+          f"{problem.soil_E:.3g}, nu = {problem.soil_nu:g}, gamma = {problem.gamma:g}, R_out = "
+          f"{problem.outer_radius:g}; mu = {problem.mu:g}; interface {interface}, {numerics.algorithm}, "
+          f"{protocol}, {numerics.steps} steps{' per quarter cycle' if protocol == 'cyclic' else ''}"
+          f"{', adaptive' if adaptive else ''}")
+    print(f"\n{'time':>6s}{'u_head mm':>11s}{'H kN':>10s}{'iters':>7s}{'gap m':>8s}{'open':>6s}{'penetr. m':>11s}")
+    for k in _rows(main, 6 if protocol == "monotonic" else 9):
+        print(f"{main.time[k]:6.2f}{1e3 * main.head_disp[k]:11.3f}{main.head_force[k]:10.2f}{main.iterations[k]:7d}"
+              f"{main.gap_depth[k]:8.2f}{main.n_open[k]:6d}{main.max_penetration[k]:11.1e}")
+    status = "reached the end" if main.converged else f"STOPPED at time {main.failed_at}"
+    print(f"  {status}; {len(main.iterations) - 1} steps, {sum(main.iterations)} iterations, "
+          f"{main.steps_cut} cuts; push {main.timings['push']:.1f} s")
+    print(f"\nbonded head compliance u/H: tied {tied.compliance:.4e} m/kN, Randolph (1981) "
+          f"{problem.randolph_compliance:.4e} m/kN, ratio {tied.randolph_ratio:.3f}")
+    if main.converged and main.head_disp[-1] != 0.0:
+        print(f"secant compliance of the {interface} model at the last state: {main.compliance:.4e} m/kN "
+              f"({main.compliance / tied.compliance:.3f} x tied)")
+    print(f"gap depth behind the pile at the last state: {main.gap_depth[-1]:.2f} m "
+          f"(lc = {problem.critical_length:.2f} m)")
+    files = [out / "head_reaction.out", out / "pile_disp.out", out / "pile_forces.out", out / "lateral_pile.pvd"]
+    try:
+        files += _plots(out, main, tied, problem)
+    except ImportError:
+        print("matplotlib not installed: no plots")
+    print(f"\nwrote {', '.join(f.name for f in files)} in {out}; wall time {time.perf_counter() - t0:.1f} s")
+    return main, tied, files

@@ -1,0 +1,120 @@
+"""The lateral_pile scene (issue 5) on the coarse level.
+
+- Bonded (tied) head compliance against Randolph (1981): within 10 % on the coarse and
+  medium meshes, the medium one closer (the levels converge onto it: 1.081, 1.038, 1.004 for
+  coarse, medium, fine; docs/lateral_pile.md).
+- Equilibrium of the pile: head force + summed contact forces on the pile + pinned-tip
+  reaction = 0 (relative 1e-8 of H); the free head carries only the contacts' moment on the
+  head node (balance to 1e-8 of the peak moment, and under 2 % of it).
+- Monotonic push: the gap opens behind the pile (x < 0) only and deepens monotonically.
+- Cyclic push (Lagrange contact): converges, the gap switches side each half cycle.
+- Adaptive stepping: a cyclic penalty run in one step per quarter cycle fails, adaptive
+  steps get through.
+- The CLI writes its recorder files, a parsable .pvd and PNGs.
+"""
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from beamsolid.scenes.lateral_pile import LEVELS, Numerics, run
+
+PYTHON = Path(__file__).resolve().parents[2] / "python"
+
+
+@pytest.fixture(scope="module")
+def monotonic():
+    return run(numerics=Numerics(steps=5))
+
+
+@pytest.mark.parametrize("level", ["coarse", "medium"])
+def test_bonded_head_compliance_matches_randolph(level):
+    r = run(numerics=Numerics(level=level, interface="tied", steps=1))
+    assert r.converged
+    # Linear model: the compliance of one step is exact for any head displacement.
+    assert r.head_force[-1] == pytest.approx(r.head_disp[-1] / r.compliance, rel=1e-12)
+    assert r.randolph_ratio == pytest.approx(1.0, abs=0.10)
+    if level == "medium":
+        coarse = run(numerics=Numerics(level="coarse", interface="tied", steps=1))
+        assert abs(r.randolph_ratio - 1.0) < abs(coarse.randolph_ratio - 1.0)
+
+
+def test_pile_equilibrium_and_free_head(monotonic):
+    r = monotonic
+    assert r.converged and r.failed_at is None
+    H = r.head_force[-1]
+    assert H > 0.0
+    assert H + r.pile_contact_force[0] + r.tip_reaction[0] == pytest.approx(0.0, abs=1e-8 * H)
+    # The pinned tip of this flexible pile (L = 2 lc) carries little.
+    assert abs(r.tip_reaction[0]) < 0.02 * H
+    peak = max(abs(m) for m in r.moment)
+    assert r.head_moment == pytest.approx(r.head_contact_moment, abs=1e-8 * peak)
+    assert abs(r.head_moment) < 0.02 * peak
+    # Lagrange multipliers: no interpenetration of closed contacts.
+    assert max(r.max_penetration) < 1e-12
+    assert r.interface.in_contact + r.interface.released == r.n_contacts
+    assert r.n_equations > 0 and set(r.timings) == {"build", "geostatic", "push", "total"}
+    assert len(r.z) == len(r.deflection) == len(r.moment) and r.deflection[0] == pytest.approx(0.02)
+
+
+def test_gap_opens_behind_the_pile_and_deepens(monotonic):
+    r = monotonic
+    depths = r.gap_depth
+    assert all(b >= a for a, b in zip(depths, depths[1:]))
+    assert depths[-1] > 0.0 and depths == r.gap_depth_back
+    assert not any(r.gap_depth_front)  # nothing opens in front of the pile
+    assert all(b >= a for a, b in zip(r.n_open, r.n_open[1:]))
+
+
+def test_cyclic_gap_switches_side():
+    r = run(numerics=Numerics(protocol="cyclic", cycles=1, steps=2))
+    assert r.converged
+    t = {round(x, 9): k for k, x in enumerate(r.time)}
+    plus, minus = t[1.0], t[3.0]  # peaks +d and -d
+    assert r.head_disp[plus] == pytest.approx(0.02) and r.head_disp[minus] == pytest.approx(-0.02)
+    assert r.gap_depth_back[plus] > 0.0 and r.gap_depth_front[plus] == 0.0
+    assert r.gap_depth_front[minus] > 0.0 and r.gap_depth_back[minus] == 0.0
+    assert r.gap_depth[minus] == r.gap_depth_front[minus]
+    assert r.head_force[plus] > 0.0 > r.head_force[minus]
+
+
+def test_adaptive_steps_get_through_where_one_step_fails():
+    n = Numerics(interface="penalty", protocol="cyclic", cycles=1, steps=1)
+    fixed = run(numerics=n)
+    assert not fixed.converged and fixed.failed_at is not None and fixed.steps_cut == 0
+    adaptive = run(numerics=Numerics(**{**n.__dict__, "adaptive": True}))
+    assert adaptive.converged and adaptive.steps_cut >= 1
+    assert adaptive.time[-1] == pytest.approx(4.0, abs=1e-12) and adaptive.head_disp[-1] == pytest.approx(0.0, abs=1e-12)
+    # Every converged state of the fixed run lies on the adaptive one's path (same times).
+    for t, H in zip(fixed.time, fixed.head_force):
+        k = min(range(len(adaptive.time)), key=lambda i: abs(adaptive.time[i] - t))
+        assert adaptive.time[k] == pytest.approx(t, abs=1e-12)
+        assert adaptive.head_force[k] == pytest.approx(H, rel=1e-6)
+
+
+def test_numerics_reject_bad_choices():
+    for bad in (dict(level="huge"), dict(interface="glue"), dict(protocol="random"), dict(algorithm="Broyden")):
+        with pytest.raises(ValueError, match="lateral_pile"):
+            Numerics(**bad)
+
+
+def test_cli_writes_recorders_pvd_and_plots(tmp_path):
+    out = tmp_path / "lp"
+    env = {"PYTHONPATH": str(PYTHON), "MPLBACKEND": "Agg", "OPENBLAS_CORETYPE": "SKYLAKEX"}
+    done = subprocess.run([sys.executable, "-m", "beamsolid.scenes", "lateral_pile", "--level", "coarse", "--out",
+                           str(out), "--steps", "4"], capture_output=True, text=True, env=env, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "Randolph" in done.stdout and "gap depth" in done.stdout
+    rows = [[float(v) for v in line.split()] for line in (out / "pile_disp.out").read_text().splitlines()]
+    assert len(rows) == 4 and rows[-1][1] == pytest.approx(0.02)  # time, then the head first
+    forces = (out / "pile_forces.out").read_text().splitlines()
+    n_beams = LEVELS["coarse"][2]
+    assert len(forces) == 4 and len(forces[-1].split()) == 1 + 12 * n_beams  # time, 12 per element
+    pvd = ET.parse(out / "lateral_pile.pvd").getroot()
+    files = [d.get("file") for d in pvd.iter("DataSet")]
+    assert len(files) == 4 and all((out / f).exists() for f in files)
+    ET.parse(out / files[-1])  # a well-formed .vtu
+    for png in ("head_load_displacement.png", "profiles.png", "gap_depth.png"):
+        assert (out / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
