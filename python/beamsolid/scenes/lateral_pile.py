@@ -106,7 +106,8 @@ import time
 from dataclasses import field
 
 from ..contact import interface_forces, pile_interface
-from ..mesh import DonutMesh, graded
+from ..geostatic import geostatic_stage
+from ..mesh import fix_soil_boundary, graded, ogrid
 from ..model import Model
 from ..stepping import adaptive_analyze
 
@@ -210,42 +211,13 @@ def soil_levels(problem, n_z):
     return graded(0.0, -problem.length, n_z, ratio)
 
 
+def radial_ratio(problem, n_radial):
+    """Geometric radial grading: each ring's width grows by (R_out / R)^(1 / n_radial)."""
+    return (problem.outer_radius / problem.pile_radius) ** (1.0 / n_radial)
+
+
 def soil_radii(problem, n_radial):
-    return graded(problem.pile_radius, problem.outer_radius, n_radial,
-                  (problem.outer_radius / problem.pile_radius) ** (1.0 / n_radial))
-
-
-def _ogrid(m, radii, levels, n_theta, material_tag, first_node, first_element, body_force):
-    """An O-grid of stdBricks like beamsolid.mesh.donut, on given radii and node levels.
-
-    (donut spaces its levels evenly; this scene needs them graded. To be replaced by the
-    mesh module's general O-grid once it has one.)"""
-    mesh = DonutMesh(n_theta=n_theta, radii=list(radii), levels=list(levels))
-    tag = first_node
-    for k, z in enumerate(levels):
-        for j, r in enumerate(radii):
-            for i in range(n_theta):
-                theta = 2.0 * math.pi * i / n_theta
-                m.node(tag, r * math.cos(theta), r * math.sin(theta), z)
-                mesh.nodes[(i, j, k)] = tag
-                tag += 1
-    n_r, n_z = len(radii) - 1, len(levels) - 1
-    for k in range(n_z + 1):
-        mesh.inner_nodes.extend(mesh.nodes[(i, 0, k)] for i in range(n_theta))
-        mesh.outer_nodes.extend(mesh.nodes[(i, n_r, k)] for i in range(n_theta))
-    mesh.top_nodes = [mesh.nodes[(i, j, 0)] for j in range(n_r + 1) for i in range(n_theta)]
-    mesh.base_nodes = [mesh.nodes[(i, j, n_z)] for j in range(n_r + 1) for i in range(n_theta)]
-    ele = first_element
-    for k in range(n_z):
-        for j in range(n_r):
-            for i in range(n_theta):
-                ip = (i + 1) % n_theta
-                c = [mesh.nodes[q] for q in ((i, j, k + 1), (i, j + 1, k + 1), (ip, j + 1, k + 1), (ip, j, k + 1),
-                                             (i, j, k), (i, j + 1, k), (ip, j + 1, k), (ip, j, k))]
-                m.element("stdBrick", ele, *c, material_tag, *body_force)
-                mesh.elements.append(ele)
-                ele += 1
-    return mesh
+    return graded(problem.pile_radius, problem.outer_radius, n_radial, radial_ratio(problem, n_radial))
 
 
 def protocol_path(problem, numerics):
@@ -291,22 +263,20 @@ class LateralPileModel:
 
         m.model("basic", "-ndm", 3, "-ndf", 3)
         m.nDMaterial("ElasticIsotropic", SOIL, p.soil_E, p.soil_nu)
-        self.mesh = mesh = _ogrid(m, soil_radii(p, n_radial), levels, n_theta, SOIL, FIRST_SOIL_NODE,
-                                  FIRST_SOIL_NODE, (0.0, 0.0, -p.gamma))
-        flags = {t: [1, 1, 0] for t in mesh.outer_nodes}
-        for t in mesh.base_nodes:
-            flags[t] = [1, 1, 1]
-        for t, f in flags.items():
-            m.fix(t, *f)
+        self.mesh = mesh = ogrid(m, pile_radius=p.pile_radius, outer_size=p.outer_radius, outer="circle",
+                                 n_theta=n_theta, n_radial=n_radial, radial_ratio=radial_ratio(p, n_radial),
+                                 levels=levels, material_tag=SOIL, first_node=FIRST_SOIL_NODE,
+                                 first_element=FIRST_SOIL_NODE, body_force=(0.0, 0.0, -p.gamma))
+        fix_soil_boundary(m, mesh)  # outer nodes fixed in x and y, base fixed
 
         # The base ring is fixed and the tip pinned: no interface there (a multiplier on fixed
         # dofs only would make the system singular).
-        self.contact_soil = mesh.inner_nodes[:n_theta * n_z]
+        self.contact_soil = [t for k in range(n_z) for t in mesh.surfaces[0][k]]
         self._x = {t: m.nodeCoord(t, 1) for t in self.contact_soil}
         if n.interface == "tied":
             for k in range(n_z):
                 for i in range(n_theta):
-                    m.rigidLink("beam", self.pile_nodes[k], mesh.nodes[(i, 0, k)])
+                    m.rigidLink("beam", self.pile_nodes[k], mesh.surfaces[0][k][i])
         else:
             m.nDMaterial("ContactMaterial3D", CONTACT, p.mu, n.contact_G, 0.0, 0.0)
             penalty = n.penalty_factor * p.stiffness_scale if n.interface == "penalty" else None
@@ -326,22 +296,21 @@ class LateralPileModel:
 
     # --- stages -----------------------------------------------------------------
     def geostatic(self):
-        """Self weight with the pile held and frictionless contacts (uniaxial strain)."""
-        m = self.m
-        if self.iface is not None:
-            m.updateMaterialStage("-material", CONTACT, "-stage", 0)
-        self._analysis(1.0, "Newton")  # a linear problem: the push's algorithm is not needed here
-        if m.analyze(1) != 0:
-            raise RuntimeError("lateral_pile: the geostatic stage did not converge")
+        """Self weight with the pile held and frictionless contacts (uniaxial strain), checked
+        against sigma_v = gamma d, sigma_h = K0 sigma_v; then loadConst and friction on."""
+        p, m = self.p, self.m
+        self.geostatic_state = geostatic_stage(m, soil_elements=self.mesh.elements, gamma=p.gamma, K0=p.K0,
+                                               contact_materials=[CONTACT] if self.iface is not None else [],
+                                               tol=self.n.tol, max_iter=self.n.max_iter,
+                                               # Tied to the held pile the soil cannot settle at the pile:
+                                               # not uniaxial strain, and irrelevant to the (linear) push.
+                                               check_tol=1e-8 if self.iface is not None else None)
 
     def release(self):
         """Friction on; the pile free but for its pinned tip and the torsion at its head; the
-        head displacement along x imposed by the protocol's Path series."""
+        head displacement along x imposed by the protocol's Path series. (geostatic_stage has
+        already frozen the weight with loadConst and switched the friction on.)"""
         m = self.m
-        m.loadConst("-time", 0.0)
-        m.wipeAnalysis()
-        if self.iface is not None:
-            m.updateMaterialStage("-material", CONTACT, "-stage", 1)
         head, tip = self.pile_nodes[0], self.pile_nodes[-1]
         for tag in self.pile_nodes:
             for dof in range(1, 7):

@@ -23,18 +23,12 @@ import time
 from dataclasses import dataclass, field
 
 from ..geostatic import geostatic_stage
-from ..mesh import fix_soil_boundary, graded, ogrid, solid_cylinder
+from ..mesh import fix_soil_boundary, ogrid, solid_cylinder
 from ..model import Model
-from .lateral_pile import LEVELS, LateralPile
+from .lateral_pile import LEVELS, LateralPile, radial_ratio, soil_levels
 
 SOIL, PILE = 1, 2
 HEAD = 900001  # the rigid head's node
-
-
-def pile_levels(problem, n_z, ratio=None):
-    """Node levels from the surface to the base, finer at the top (first layer about L / (4 n_z))."""
-    ratio = ratio if ratio is not None else 1.0 + 2.4 / n_z
-    return graded(0.0, -problem.length, n_z, ratio)
 
 
 @dataclass(frozen=True)
@@ -83,13 +77,13 @@ class SolidPileModel:
     def build(self):
         p, n, m = self.p, self.n, self.m
         n_theta, n_radial, n_z = LEVELS[n.level]
-        levels = pile_levels(p, n_z)
+        levels = soil_levels(p, n_z)  # the same soil mesh as the beam-pile models
         m.wipe()
         m.model("basic", "-ndm", 3, "-ndf", 3)
         m.nDMaterial("ElasticIsotropic", SOIL, p.soil_E, p.soil_nu)
         m.nDMaterial("ElasticIsotropic", PILE, p.pile_E, p.pile_nu)
         self.soil = ogrid(m, pile_radius=p.pile_radius, outer_size=p.outer_radius, outer="circle", n_theta=n_theta,
-                          n_radial=n_radial, radial_ratio=1.3, levels=levels, material_tag=SOIL,
+                          n_radial=n_radial, radial_ratio=radial_ratio(p, n_radial), levels=levels, material_tag=SOIL,
                           body_force=(0.0, 0.0, -p.gamma) if n.interface == "contact" else (0.0, 0.0, 0.0))
         fix_soil_boundary(m, self.soil)
         self.pile = solid_cylinder(m, radius=p.pile_radius, levels=levels, n_theta=n_theta, material_tag=PILE)
