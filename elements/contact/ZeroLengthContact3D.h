@@ -30,7 +30,11 @@ namespace beamsolid {
 // The element exerts N n - T^T F_t on the constrained node and the opposite
 // on the retained one; the tangent is the consistent one (unsymmetric while
 // sliding with mu > 0). These conventions (which node is which, the sign of
-// the gap) are OpenSeesPy's, checked against it.
+// the gap, the initial gap from the coordinates) are OpenSeesPy's, checked
+// against it (tests/python/oracle_scripts/zerolength_contact.py). On purpose
+// unlike OpenSeesPy: while sliding the friction force stays at mu N + c
+// (OpenSeesPy's drops, a sawtooth), and friction restarts after an opening
+// (OpenSeesPy keeps its old stick point).
 class ZeroLengthContact3D : public Element {
  public:
   using Vector2 = Eigen::Vector2d;
