@@ -161,6 +161,13 @@ Vector3 firstThree(const Response& r) {
   return translational(r.value());
 }
 
+// The node a contact is drawn at: its vertexNode(), else the beam contact
+// elements' soil node (the third).
+std::size_t vertexOf(const Element& e) {
+  const int v = e.vertexNode();
+  return v >= 0 ? static_cast<std::size_t>(v) : 2u;
+}
+
 }  // namespace
 
 bool PVDRecorder::cellKindOf(const std::string& className, CellKind& kind) {
@@ -319,7 +326,11 @@ void PVDRecorder::updateTopology(Domain& domain) {
   std::vector<Cell> solids, lines, contacts;
   for (const auto& [tag, element] : domain.elements()) {
     CellKind kind;
-    if (!cellKindOf(element->className(), kind)) continue;
+    // Classes by name, and any element that says it is a point (vertexNode).
+    if (!cellKindOf(element->className(), kind)) {
+      if (element->vertexNode() < 0) continue;
+      kind = CellKind::Contact;
+    }
     const auto& nodes = element->nodes();
     Cell cell;
     cell.element = element.get();
@@ -341,7 +352,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
         lines.push_back(std::move(cell));
         break;
       case CellKind::Contact:
-        if (nodes.size() < 3) continue;
+        if (vertexOf(*element) >= nodes.size()) continue;
         cell.vtkType = kVtkVertex;
         cell.responses = {element->setResponse({"status"}), element->setResponse({"gap"}),
                           element->setResponse({"forcescalar"}), element->setResponse({"frictionforce"}),
@@ -360,7 +371,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
       case CellKind::Solid: return std::vector<const Node*>(nodes.begin(), nodes.end());
       case CellKind::Beam:
       case CellKind::Truss: return std::vector<const Node*>{nodes[0], nodes[1]};
-      case CellKind::Contact: return std::vector<const Node*>{nodes[2]};  // the soil node
+      case CellKind::Contact: return std::vector<const Node*>{nodes[vertexOf(*c.element)]};
     }
     return std::vector<const Node*>{};
   };

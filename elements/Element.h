@@ -69,6 +69,11 @@ class Element {
   // entries (Lagrange multipliers), cannot go to an SPD-only solver.
   virtual bool needsGeneralSolver() const { return false; }
 
+  // The node (index into nodes()) at which the element is drawn as a point
+  // (VTK_VERTEX) by the PVD recorder, e.g. a node-to-node contact; -1, the
+  // default, for an element that is not a point.
+  virtual int vertexNode() const { return -1; }
+
   // Readable one-element description for printModel, and a JSON object.
   virtual void print(std::ostream& os) const;
   virtual void printJSON(std::ostream& os) const;

@@ -18,4 +18,5 @@ SCRIPTS = (
     "staged_constraints",
     "mixed_pile",
     "response_names",
+    "zerolength_contact",
 )
