@@ -143,6 +143,10 @@ class Numerics:
     steps: int = 20  # steps to reach head_disp (monotonic), or per quarter cycle (cyclic)
     protocol: str = "monotonic"  # "monotonic" | "cyclic"
     cycles: int = 2  # cyclic: full cycles 0 -> +d -> 0 -> -d -> 0 (peaks +d, -d, +d, ...)
+    # "disp": the head displacement follows the protocol to +-head_disp (the head force is its
+    # reaction); "force": a head load follows the same protocol to +-head_load kN (LoadControl).
+    control: str = "disp"
+    head_load: float = 700.0
     adaptive: bool = False  # cut the step on failure (halve), grow it back (double) after easy steps
     min_fraction: float = 1.0 / 64  # adaptive: smallest step, as a fraction of the nominal one
     tol: float = 1e-6  # NormUnbalance (kN; the multiplier rows in m)
@@ -157,6 +161,8 @@ class Numerics:
             raise ValueError(f"lateral_pile: unknown algorithm {self.algorithm!r}")
         if self.protocol not in ("monotonic", "cyclic"):
             raise ValueError(f"lateral_pile: protocol must be 'monotonic' or 'cyclic', got {self.protocol!r}")
+        if self.control not in ("disp", "force"):
+            raise ValueError(f"lateral_pile: control must be 'disp' or 'force', got {self.control!r}")
         if self.steps < 1 or self.cycles < 1:
             raise ValueError("lateral_pile: steps and cycles must be at least 1")
 
@@ -302,9 +308,10 @@ class LateralPileModel:
         self.geostatic_state = geostatic_stage(m, soil_elements=self.mesh.elements, gamma=p.gamma, K0=p.K0,
                                                contact_materials=[CONTACT] if self.iface is not None else [],
                                                tol=self.n.tol, max_iter=self.n.max_iter,
-                                               # Tied to the held pile the soil cannot settle at the pile:
-                                               # not uniaxial strain, and irrelevant to the (linear) push.
-                                               check_tol=1e-8 if self.iface is not None else None)
+                                               # Exact only with Lagrange multipliers: a penalty interface
+                                               # yields by sigma_h A / penalty, and tied to the held pile the
+                                               # soil cannot settle (irrelevant to the linear tied push).
+                                               check_tol=1e-8 if self.n.interface == "contact" else None)
 
     def release(self):
         """Friction on; the pile free but for its pinned tip and the torsion at its head; the
@@ -318,9 +325,14 @@ class LateralPileModel:
                 if not keep:
                     m.remove("sp", tag, dof)
         times, values = protocol_path(self.p, self.n)
+        if self.n.control == "force":  # the series gives the head load in kN
+            values = [v / self.p.head_disp * self.n.head_load for v in values]
         m.timeSeries("Path", TS_PUSH, "-time", *times, "-values", *values)
         m.pattern("Plain", PAT_PUSH, TS_PUSH)
-        m.sp(head, 1, 1.0)
+        if self.n.control == "force":
+            m.load(head, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        else:
+            m.sp(head, 1, 1.0)
         self._analysis(1.0 / self.n.steps, self.n.algorithm)
 
     def add_recorders(self, out):
@@ -372,7 +384,7 @@ class LateralPileModel:
         m.reactions()
         r.time.append(t)
         r.head_disp.append(m.nodeDisp(head, 1))
-        r.head_force.append(m.nodeReaction(head, 1))
+        r.head_force.append(m.getLoadFactor(PAT_PUSH) if self.n.control == "force" else m.nodeReaction(head, 1))
         r.iterations.append(iterations)
         back, front, n_open, n_slide, penetration = self.contact_state()
         r.gap_depth_back.append(back)
