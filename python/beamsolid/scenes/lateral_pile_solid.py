@@ -185,7 +185,8 @@ class SolidPileModel:
                     x, f = m.nodeCoord(pile), m.eleResponse(e, "force")
                     out.append((x[0], x[1], x[2], -f[0], -f[1], -f[2]))
             return out
-        surface = {soil for (_, soil, _, _) in self.pairs}
+        last = len(self.levels) - 1  # the base ring is fixed on both sides: not part of the interface
+        surface = {soil for (k, soil, _, _) in self.pairs if k < last}
         acc = {}
         for e in self.soil.elements:
             nodes = m.eleNodes(e)
