@@ -13,6 +13,7 @@ import sys
 SCENES = {
     "lateral_pile": ("beamsolid.scenes.lateral_pile", "scene", "a pile in elastic soil pushed laterally at its head"),
     "donut_pullout": ("beamsolid.scenes.donut_cli", "scene", "the donut pullout test (paper's Table 1)"),
+    "bridge_bent": ("beamsolid.scenes.bridge_bent", "scene", "piles joined by a cap beam, pushed transversely"),
 }
 
 

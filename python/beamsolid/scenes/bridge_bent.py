@@ -28,8 +28,8 @@ Stage 1, geostatic: soil weight as stdBrick body forces, contacts frictionless, 
 pile node held (geostatic.geostatic_stage); sigma_h = K0 gamma d on each pile, the
 faceted closed form sum N = n R sin(2 pi / n) integral_0^L sigma_h dz per pile.
 Stage 2: friction on, piles released, the cap node above the middle pile pushed along
-+x by DisplacementControl in equal steps (a failing step is cut in halves, up to
-`max_cuts` times). The soil on each pile's trailing side (x < pile axis) unloads
++x by DisplacementControl in equal steps (stepping.adaptive_analyze: a failing step is
+cut in halves, up to `max_cuts` times, and grown back after easy steps). The soil on each pile's trailing side (x < pile axis) unloads
 until its contacts open, from the ground surface downwards.
 
 Per step: cap force, pile head shears and shares, open contacts and trailing-side gap
@@ -46,6 +46,7 @@ from ..contact import pile_interface
 from ..geostatic import geostatic_stage
 from ..mesh import beam_pile, fix_soil_boundary, graded, pile_group
 from ..model import Model
+from ..stepping import adaptive_analyze
 
 # Mesh levels: (n_theta, n_radial, n_z along the piles, n_padding).
 LEVELS = {
@@ -155,7 +156,8 @@ class BentResult:
     status: list = field(default_factory=list)  # per step: per pile, the contact statuses in element order
     soil_reaction_x: list = field(default_factory=list)  # per step: x reactions on the soil's x faces
     iterations: list = field(default_factory=list)  # per push step (summed over cuts)
-    cuts: list = field(default_factory=list)
+    cuts: int = 0  # steps halved by the adaptive stepper
+    grows: int = 0  # steps doubled back
     final: list = field(default_factory=list)  # per pile: PileContacts at the last step
     geostatic_time: float = 0.0
     push_time: float = 0.0
@@ -304,28 +306,17 @@ class BentModel:
             self.recorders(out, r)
             m.record()  # the geostatic state as the first row / file
         self.record(r)
-        for step in range(s.steps):
-            ok, iters, cuts, n_sub = m.analyze(1), 0, 0, 1
-            if ok == 0:
-                iters = m.testIter()
-            # Cut a failing step in halves; a partly done cut is finished at its size.
-            while ok != 0 and cuts < s.max_cuts:
-                n_sub, cuts = 2 * n_sub, cuts + 1
-                target = (step + 1) * du
-                m.integrator("DisplacementControl", self.cap, 1, du / n_sub)
-                ok, iters = 0, 0
-                while m.nodeDisp(self.cap, 1) < target - 1e-9 * du:
-                    ok = m.analyze(1)
-                    if ok != 0:
-                        break
-                    iters += m.testIter()
-                m.integrator("DisplacementControl", self.cap, 1, du)
-            if ok != 0:
-                r.failed_step = step + 1
-                break
-            r.iterations.append(iters)
-            r.cuts.append(cuts)
+
+        def on_step(progress, iterations):
+            r.iterations.append(iterations)
             self.record(r)
+
+        # Cut a failing step in halves (down to push / steps / 2^max_cuts), grow it back after easy steps.
+        stepper = adaptive_analyze(m, s.push, s.steps, integrator=lambda d: ("DisplacementControl", self.cap, 1, d),
+                                   adaptive=s.max_cuts > 0, min_fraction=0.5**s.max_cuts, on_step=on_step)
+        r.cuts, r.grows = stepper.cuts, stepper.grows
+        if not stepper.converged:
+            r.failed_step = len(r.iterations) + 1
 
     def recorders(self, out, r):
         m = self.m
@@ -381,7 +372,7 @@ def table(r):
     lines.append("u cap in mm, forces in kN; gap z: depth (m) of the deepest open contact on the trailing side; "
                  "sum F: summed friction force magnitudes")
     if r.failed_step:
-        lines.append(f"step {r.failed_step} failed after {r.setup.max_cuts} cuts")
+        lines.append(f"step {r.failed_step} failed after {r.cuts} cuts (at most {r.setup.max_cuts} halvings of a step)")
     return "\n".join(lines)
 
 
@@ -443,6 +434,20 @@ def plots(r, out):
     fig.savefig(files["pattern"], dpi=110)
     plt.close(fig)
     return files
+
+
+def scene(level="coarse", out="bridge_bent_output", steps=None, adaptive=False):
+    """`python -m beamsolid.scenes bridge_bent --level ...`: run, print the table, save the plots.
+    --adaptive allows more step halvings (8 instead of 4)."""
+    extra = {} if steps is None else {"steps": steps}
+    if adaptive:
+        extra["max_cuts"] = 8
+    r = run(BridgeBent(level=level, **extra), out=out)
+    print(table(r))
+    r.files.update(plots(r, out))
+    for name, path in r.files.items():
+        print(f"{name:12s} {path}")
+    return r
 
 
 def main(argv=None):
