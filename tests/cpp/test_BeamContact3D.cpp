@@ -14,6 +14,7 @@
 #include "core/OpenSeesError.h"
 #include "elements/contact/BeamContact3D.h"
 #include "elements/contact/BeamContact3Dp.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
@@ -24,14 +25,7 @@ using Vector2 = Eigen::Vector2d;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Vector15 = BeamContactGeometry::Vector15;
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 void addLinearTransf(Domain& d, int tag, const Vector3& vecxz) {
   CommandArgs a = args("geomTransf", tag, vecxz.x(), vecxz.y(), vecxz.z());

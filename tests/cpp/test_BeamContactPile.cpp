@@ -17,6 +17,7 @@
 #include "elements/contact/BeamContact3Dp.h"
 #include "support/Script.h"
 #include "support/TestSpring.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
@@ -28,14 +29,7 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 constexpr double kRadius = 0.3;
 constexpr double kMu = 0.3, kG = 1000.0, kC = 0.5;
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 void addLinearTransf(Domain& d, int tag, const Vector3& vecxz) {
   CommandArgs a = args("geomTransf", tag, vecxz.x(), vecxz.y(), vecxz.z());

@@ -19,6 +19,7 @@
 #include "elements/contact/BeamEndContact3D.h"
 #include "elements/contact/BeamEndContact3Dp.h"
 #include "support/Script.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
@@ -29,14 +30,7 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Vector15 = BeamEndContactElement::Vector15;
 using Matrix15 = BeamEndContactElement::Matrix15;
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 Vector3 perpendicular(const Vector3& axis) {
   Vector3 p = axis.cross(Vector3::UnitX());

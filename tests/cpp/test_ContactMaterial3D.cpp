@@ -12,6 +12,7 @@
 #include "SolidsTestSupport.h"
 #include "core/OpenSeesError.h"
 #include "materials/nd/ContactMaterial3D.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
@@ -32,14 +33,7 @@ double normIn(const Matrix2& m, const Vector2& s) { return std::sqrt(s.dot(m * s
 // |T| of a covariant traction: sqrt(T . m^-1 T).
 double tractionNorm(const Matrix2& m, const Vector2& T) { return std::sqrt(T.dot(m.inverse() * T)); }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 constexpr double mu = 0.4, G = 1500.0, c = 3.0, t = 2.0;
 

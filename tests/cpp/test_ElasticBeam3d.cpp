@@ -10,6 +10,7 @@
 #include "BeamTestModel.h"
 #include "core/OpenSeesError.h"
 #include "elements/ElasticBeam3d.h"
+#include "support/ErrorOf.h"
 
 using namespace beamtest;
 using beamsolid::ElasticBeam3d;
@@ -506,14 +507,7 @@ TEST(ElasticBeam3d, PrintAndJSONDescribeTheElement) {
 
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 }  // namespace
 

@@ -14,6 +14,7 @@
 #include "core/OpenSeesError.h"
 #include "elements/StdBrick.h"
 #include "materials/nd/ElasticIsotropic3D.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
@@ -84,14 +85,7 @@ void addDistortedBrick(Domain& d, const Vector3& b = Vector3::Zero()) {
   addElement(d, "stdBrick", 1, std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8}, 1, b(0), b(1), b(2));
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 // An ND material that records updateStage calls and may refuse 3D use.
 class StageRecorder : public NDMaterial {

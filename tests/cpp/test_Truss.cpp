@@ -12,20 +12,14 @@
 #include "core/OpenSeesError.h"
 #include "elements/CorotTruss.h"
 #include "elements/Truss.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
 
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 Vector3 unit(const Vector3& v) { return v / v.norm(); }
 

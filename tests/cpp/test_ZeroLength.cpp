@@ -9,6 +9,7 @@
 #include "SolidsTestSupport.h"
 #include "core/OpenSeesError.h"
 #include "elements/ZeroLength.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
@@ -17,14 +18,7 @@ namespace {
 
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 }  // namespace
 

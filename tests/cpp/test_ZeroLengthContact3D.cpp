@@ -13,6 +13,7 @@
 #include "SolidsTestSupport.h"
 #include "core/OpenSeesError.h"
 #include "elements/contact/ZeroLengthContact3D.h"
+#include "support/ErrorOf.h"
 
 using namespace beamsolid;
 using namespace beamsolid::solidstest;
@@ -21,14 +22,7 @@ namespace {
 
 constexpr double kKn = 1000.0, kKt = 100.0, kMu = 0.5, kC = 2.0;
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const OpenSeesError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using beamsolid::testsupport::errorOf;
 
 // Constrained node 1 and retained node 2 at X (coincident), element 1.
 ZeroLengthContact3D& makeContact(Domain& d, int dir, const Vector3& X = Vector3::Zero(), double ox = 0.0,
