@@ -33,7 +33,7 @@ void BeamContact3D::update() {
   activeInUpdate_ = inContact_;
   if (inContact_) {
     const BeamContactGeometry& g = geometry_;
-    material_->setTrialState(g.gap(), g.slip(), lambda, g.metric());
+    material_->setIterate(g.gap(), g.slip(), lambda, g.metric());
     const Vector2& T = material_->traction();
     const auto& Bn = g.gapGradient();
     const auto& Bs = g.slipGradient();

@@ -38,7 +38,7 @@ void BeamContact3Dp::update() {
   }
   // C19: t_n = kappa <-g>.
   const double tn = -penalty_ * g.gap();
-  material_->setTrialState(g.gap(), g.slip(), tn, g.metric());
+  material_->setIterate(g.gap(), g.slip(), tn, g.metric());
   const auto& Bn = g.gapGradient();
   const auto& Bs = g.slipGradient();
   normalForce_ = tn;

@@ -86,7 +86,7 @@ void ZeroLengthContact3D::update() {
   Matrix3 k = Matrix3::Zero();
   if (normalForce_ > 0.0) k += Kn_ * normal_ * normal_.transpose();
   if (Kt_ > 0.0) {
-    friction_.setTrialState(gap_, slip_ - committedSlip_, normalForce_, Eigen::Matrix2d::Identity());
+    friction_.setIterate(gap_, slip_ - committedSlip_, normalForce_, Eigen::Matrix2d::Identity());
     f += tangents_.transpose() * friction_.traction();
     k += tangents_.transpose() * friction_.tangentSlip() * tangents_;
     // dF_t/dN dN/d(du) with dN/d(du) = -Kn n^T in contact.

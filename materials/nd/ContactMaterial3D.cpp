@@ -99,7 +99,45 @@ void ContactMaterial3D::setTrialState(double gap, const Vector2& slip, double no
   fillGeneric(gap, slip, normalForce);
 }
 
+void ContactMaterial3D::setIterate(double gap, const Vector2& slip, double normalForce, const Matrix2& metric) {
+  if (!haveLast_ || slip != lastSlip_ || normalForce != lastNormalForce_) {
+    // A new iterate: the last call's outcome becomes the previous iterate.
+    previousSliding_ = haveLast_ && lastSliding_;
+    previousDirection_ = lastDirection_;
+  }
+  setTrialState(gap, slip, normalForce, metric);
+  held_ = false;
+  if (sliding_ && previousSliding_) {
+    // Plastic multiplier of the trial state along the previous traction
+    // direction t (unit in m^-1): t . G s_e - (mu t_n + c) (C14 projected).
+    const Vector2 trialSlip = committedElasticSlip_ + slip;
+    if (G_ * previousDirection_.dot(trialSlip) <= slipResistance_) {
+      held_ = true;
+      sliding_ = false;
+      elasticSlip_ = trialSlip;
+      plasticSlip_.setZero();
+      traction_ = G_ * metric_ * trialSlip;
+      tangentSlip_ = G_ * metric_;
+      tangentNormal_.setZero();
+      fillGeneric(gap, slip, normalForce);
+    }
+  }
+  haveLast_ = true;
+  lastSlip_ = slip;
+  lastNormalForce_ = normalForce;
+  lastSliding_ = sliding_;
+  const double norm = tractionNorm();
+  lastDirection_ = sliding_ && norm > 0.0 ? Vector2(traction_ / norm) : Vector2::Zero();
+}
+
+void ContactMaterial3D::forgetIterates() {
+  held_ = haveLast_ = lastSliding_ = previousSliding_ = false;
+  lastDirection_.setZero();
+  previousDirection_.setZero();
+}
+
 void ContactMaterial3D::release() {
+  forgetIterates();
   sliding_ = false;
   elasticSlip_.setZero();
   plasticSlip_.setZero();
@@ -126,9 +164,13 @@ void ContactMaterial3D::setTrialStrain(const Eigen::Ref<const Vector>& strain) {
   setTrialState(strain(0), Vector2(strain(1), strain(2)), strain(3), metric_);
 }
 
-void ContactMaterial3D::commitState() { committedElasticSlip_ = elasticSlip_; }
+void ContactMaterial3D::commitState() {
+  committedElasticSlip_ = elasticSlip_;
+  forgetIterates();
+}
 
 void ContactMaterial3D::revertToLastCommit() {
+  forgetIterates();
   sliding_ = false;
   elasticSlip_ = committedElasticSlip_;
   plasticSlip_.setZero();

@@ -42,6 +42,24 @@ class ContactMaterial3D : public NDMaterial {
   // Trial state for (gap, incremental slip s^alpha since the last commit,
   // normal force t_n, surface metric m).
   void setTrialState(double gap, const Vector2& slip, double normalForce, const Matrix2& metric);
+  // The same inside a Newton loop (what the contact elements call): the
+  // return map of setTrialState, except that a node that slid in the previous
+  // iterate of the step and whose trial elastic traction G m s_e no longer
+  // exceeds mu t_n + c along that iterate's traction direction (its plastic
+  // multiplier would turn negative: the slip reversed) is held sticking for
+  // this iterate, with the elastic traction G m s_e and tangent G m. Without
+  // this guard a stiff stick (stick band |s_e| < (mu t_n + c)/G narrower than
+  // a Newton correction) makes Newton cycle between sliding one way and the
+  // other: the sliding tangent is zero along the slip, so each correction
+  // overshoots the band to the opposite side. The next iterate starts from
+  // the stick state, so the return map's answer is restored as soon as the
+  // slip no longer reverses; a converged step is a solution of the same
+  // friction law. The previous iterate is the last call with a different
+  // input (repeated calls with the same input give the same answer); the
+  // memory is cleared by commit, revert and release.
+  void setIterate(double gap, const Vector2& slip, double normalForce, const Matrix2& metric);
+  // Whether the last setIterate held a reversing node sticking.
+  bool heldSticking() const { return held_; }
   // Out of contact: no traction, and the elastic slip is reset so that
   // friction starts afresh when contact closes again.
   void release();
@@ -104,6 +122,7 @@ class ContactMaterial3D : public NDMaterial {
   std::string context() const;
   void setFrictional(double flag);
   void fillGeneric(double gap, const Vector2& slip, double normalForce);
+  void forgetIterates();
 
   double mu_, G_, c_, t_;
   bool frictional_ = true;
@@ -119,6 +138,14 @@ class ContactMaterial3D : public NDMaterial {
   bool sliding_ = false;
   // Committed state.
   Vector2 committedElasticSlip_ = Vector2::Zero();
+  // setIterate's memory: the input and outcome of the last call, and the
+  // outcome of the iterate before it (sliding, unit traction direction).
+  bool held_ = false;
+  bool haveLast_ = false;
+  Vector2 lastSlip_ = Vector2::Zero();
+  double lastNormalForce_ = 0.0;
+  bool lastSliding_ = false, previousSliding_ = false;
+  Vector2 lastDirection_ = Vector2::Zero(), previousDirection_ = Vector2::Zero();
 
   // For the generic interface only.
   Vector4 strain_ = Vector4::Zero();

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <functional>
+#include <vector>
 
 #include "SolidsTestSupport.h"
 #include "core/OpenSeesError.h"
@@ -289,6 +290,116 @@ TEST(ContactMaterial3D, RevertToLastCommitReproducesTheTrialStateExactly) {
   mat.revertToStart();
   mat.setTrialState(0.0, Vector2(1e-5, 0.0), 25.0, m);
   EXPECT_LE((mat.traction() - G * m * Vector2(1e-5, 0.0)).norm(), 1e-14 * G);
+}
+
+namespace {
+
+// Newton's method on a friction node held by a spring of stiffness k (per
+// unit slip, in the metric): k m s + T(s) = f (covariant). `guarded` uses
+// setIterate (the contact elements' call), otherwise the plain return map
+// setTrialState. Returns the residual norms |r| after each correction.
+std::vector<double> springNewton(ContactMaterial3D& mat, bool guarded, double k, const Vector2& f, double N,
+                                 const Matrix2& m, Vector2 s, int iterations) {
+  std::vector<double> norms;
+  auto evaluate = [&](const Vector2& slip) {
+    if (guarded) mat.setIterate(0.0, slip, N, m);
+    else mat.setTrialState(0.0, slip, N, m);
+    return Vector2(k * m * slip + mat.traction() - f);
+  };
+  Vector2 r = evaluate(s);
+  for (int i = 0; i < iterations; ++i) {
+    const Matrix2 K = k * m + mat.tangentSlip();
+    s -= K.fullPivLu().solve(r);
+    r = evaluate(s);
+    norms.push_back(tractionNorm(m, r));
+  }
+  return norms;
+}
+
+}  // namespace
+
+// The lateral pile's failure in one node: a stiff stick (band |s_e| <
+// mu N / G far narrower than the spring's own slip under the friction force,
+// mu N / k) and a load inside the friction capacity, so that the node truly
+// sticks. Newton started on the sliding side: the plain return map gives a
+// zero tangent along the slip, each correction overshoots the band to the
+// other side and the iteration cycles for ever between sliding up and down
+// (closed form: s alternates between (f - R)/k and (f + R)/k, the residual is 2 R). setIterate
+// holds the reversing node sticking once; the stick system is linear, so
+// the next iterate is the exact solution s = f / ((k + G) m).
+TEST(ContactMaterial3D, IterateHoldsAReversingNodeStickingInsteadOfCycling) {
+  const Matrix2 m = testMetric();
+  const double stiffG = 1e6, k = 1e4, N = 2.0, capacity = mu * N;  // no cohesion: c = t = 0
+  const Vector2 e = Vector2(1.0, -0.5) / normIn(m, Vector2(1.0, -0.5));
+  const Vector2 f = 0.3 * capacity * m * e;
+  const Vector2 start = 5.0 * capacity / k * e;  // sliding along +e
+  const Vector2 exact = 0.3 * capacity / (k + stiffG) * e;
+  ASSERT_LT(stiffG * normIn(m, exact), capacity);  // the solution sticks
+  {
+    SCOPED_TRACE("plain return map: cycles");
+    ContactMaterial3D mat(1, mu, stiffG, 0.0, 0.0);
+    const std::vector<double> norms = springNewton(mat, false, k, f, N, m, start, 20);
+    // Both states of the cycle are off balance by the jump of the friction force, 2 R.
+    EXPECT_NEAR(norms[18], 2.0 * capacity, 1e-9 * capacity);
+    EXPECT_NEAR(norms[19], 2.0 * capacity, 1e-9 * capacity);
+    EXPECT_TRUE(mat.sliding());
+  }
+  {
+    SCOPED_TRACE("setIterate: converges");
+    ContactMaterial3D mat(1, mu, stiffG, 0.0, 0.0);
+    const std::vector<double> norms = springNewton(mat, true, k, f, N, m, start, 3);
+    EXPECT_GT(norms[0], capacity);  // held sticking after the reversal: far from balanced
+    EXPECT_LE(norms[1], 1e-12 * capacity);
+    EXPECT_LE(norms[2], 1e-12 * capacity);
+    EXPECT_FALSE(mat.sliding());
+    EXPECT_FALSE(mat.heldSticking());
+    EXPECT_LE(normIn(m, mat.elasticSlip() - exact), 1e-10 * normIn(m, exact));
+  }
+  {
+    SCOPED_TRACE("setIterate: a truly sliding node slides at once");
+    ContactMaterial3D mat(1, mu, stiffG, 0.0, 0.0);
+    const Vector2 load = 3.0 * capacity * m * e;
+    const std::vector<double> norms = springNewton(mat, true, k, load, N, m, Vector2::Zero(), 3);
+    EXPECT_LE(norms[1], 1e-12 * capacity);
+    EXPECT_TRUE(mat.sliding());
+    EXPECT_NEAR(tractionNorm(m, mat.traction()), capacity, 1e-12 * capacity);
+  }
+}
+
+TEST(ContactMaterial3D, IterateIsRepeatableAndForgetsAtCommitAndRevert) {
+  const Matrix2 m = testMetric();
+  const double N = 10.0, capacity = mu * N + c;
+  const Vector2 e = Vector2(0.4, 1.0) / normIn(m, Vector2(0.4, 1.0));
+  ContactMaterial3D mat(1, mu, G, c, t);
+  mat.setIterate(0.0, 4.0 * capacity / G * e, N, m);  // slides along +e
+  ASSERT_TRUE(mat.sliding());
+  const Vector2 back = -3.0 * capacity / G * e;       // the return map slides along -e
+  mat.setIterate(0.0, back, N, m);
+  EXPECT_TRUE(mat.heldSticking());
+  const Vector2 held = mat.traction();
+  EXPECT_LE((held - G * m * back).norm(), 1e-12 * G * m.norm() * normIn(m, back));
+  EXPECT_LE((mat.tangentSlip() - G * m).norm(), 1e-12 * G);
+  // The same input again: the same answer (an integrator may update twice).
+  mat.setIterate(0.0, back, N, m);
+  EXPECT_TRUE(mat.heldSticking());
+  EXPECT_EQ(mat.traction(), held);
+  // The next different input starts from the held (sticking) iterate: the return map.
+  mat.setIterate(0.0, 1.01 * back, N, m);
+  EXPECT_FALSE(mat.heldSticking());
+  EXPECT_TRUE(mat.sliding());
+  // After a revert, or a commit, there is no previous iterate: the return map.
+  for (int k = 0; k < 2; ++k) {
+    mat.setIterate(0.0, 4.0 * capacity / G * e, N, m);
+    if (k == 0) mat.revertToLastCommit();
+    else mat.commitState();
+    mat.setIterate(0.0, back, N, m);
+    EXPECT_FALSE(mat.heldSticking());
+    mat.setTrialState(0.0, back, N, m);
+    const Vector2 plain = mat.traction();
+    mat.setIterate(0.0, back, N, m);
+    EXPECT_EQ(mat.traction(), plain);
+    mat.revertToStart();
+  }
 }
 
 TEST(ContactMaterial3D, CloneServesOnlyContactElements) {

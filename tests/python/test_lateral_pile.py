@@ -8,6 +8,9 @@
   head node (balance to 1e-8 of the peak moment, and under 2 % of it).
 - Monotonic push: the gap opens behind the pile (x < 0) only and deepens monotonically.
 - Cyclic push (Lagrange contact): converges, the gap switches side each half cycle.
+- A stiff stick (G = 1e6, Lagrange): converges (it cycled between sliding up and down at the
+  ground-surface nodes before ContactMaterial3D::setIterate), balances, and is stiffer than
+  G = 1e3 (~9 %) yet softer than the bonded pile.
 - Adaptive stepping: a cyclic penalty run in one step per quarter cycle fails, adaptive
   steps get through.
 - The CLI writes its recorder files, a parsable .pvd and PNGs.
@@ -19,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from beamsolid.scenes.lateral_pile import LEVELS, Numerics, run
+from beamsolid.scenes.lateral_pile import LEVELS, LateralPile, LateralPileModel, Numerics, run
 
 PYTHON = Path(__file__).resolve().parents[2] / "python"
 
@@ -66,6 +69,36 @@ def test_gap_opens_behind_the_pile_and_deepens(monotonic):
     assert depths[-1] > 0.0 and depths == r.gap_depth_back
     assert not any(r.gap_depth_front)  # nothing opens in front of the pile
     assert all(b >= a for a, b in zip(r.n_open, r.n_open[1:]))
+
+
+def test_stiff_stick_converges(monotonic):
+    r = run(numerics=Numerics(contact_G=1e6, steps=5))
+    assert r.converged and r.failed_at is None
+    assert max(r.iterations) <= 8  # was: no convergence in 25 iterations at the first step
+    H = r.head_force[-1]
+    assert H + r.pile_contact_force[0] + r.tip_reaction[0] == pytest.approx(0.0, abs=1e-8 * H)
+    assert max(r.max_penetration) < 1e-12
+    tied = run(numerics=Numerics(interface="tied", steps=1))
+    # Same head displacement (20 mm) in all three runs.
+    assert 1.05 * monotonic.head_force[-1] < H < tied.head_force[-1]
+
+
+def test_stiff_stick_first_step_converges_quadratically():
+    # The step that cycled (residual 7 <-> 11 kN for ever): once the stick/slip pattern has
+    # settled (norm below 1 kN), Newton's rate is superlinear -- the reduction factor improves
+    # (measured 0.355, 5.6e-3, 6.7e-6, 3.6e-8: order ~1.6, the last value at round-off) -- and
+    # the tolerance 1e-6 is reached within three more iterations.
+    model = LateralPileModel(LateralPile(), Numerics(contact_G=1e6, steps=5)).build()
+    model.geostatic()
+    model.release()
+    assert model.m.analyze(1) == 0
+    norms = [v for v in model.m.testNorms() if v > 0.0]
+    assert len(norms) <= 8
+    first = next(k for k, v in enumerate(norms) if v < 1.0)
+    assert len(norms) - 1 - first <= 3
+    a, b, c = norms[first:first + 3]
+    assert c / b < 0.2 * (b / a) and b / a < 0.1
+    model.m.wipe()
 
 
 def test_cyclic_gap_switches_side():

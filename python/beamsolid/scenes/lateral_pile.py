@@ -132,12 +132,10 @@ class Numerics:
     interface: str = "contact"  # "contact" (BeamContact3D) | "penalty" (BeamContact3Dp) | "tied" (rigidLink)
     penalty_factor: float = 1e3  # penalty = penalty_factor * problem.stiffness_scale ("penalty")
     # Stick stiffness of ContactMaterial3D (kN per m of elastic slip, per contact node). Ideally
-    # stiff relative to the soil (E_soil h ~ 1e4 kN/m per surface node here) so that a sticking
-    # node does not slip; but the Lagrange form (BeamContact3D) then cycles in Newton between
-    # sliding up and down at the nodes near the ground surface, whose normal force is ~0
-    # (sigma_h = K0 gamma z): G >= 1e4 fails at the first step with any step size, G <= 3e3
-    # converges. The default is the paper's G = 1000 (as the donut pullout); the head force at
-    # 20 mm is 9 % below the penalty form's with G = 1e6 (docs/lateral_pile.md).
+    # stiff relative to the soil (E_soil h ~ 1e4 kN/m per surface node) so that a sticking node
+    # does not slip; any G converges (ContactMaterial3D::setIterate; G = 1e6 takes 6-7 Newton
+    # iterations a step, G = 1e3 2-4). The default is the paper's G = 1000 (as the donut pullout);
+    # the head force at 20 mm is 9 % below that with G = 1e6 (docs/lateral_pile.md).
     contact_G: float = 1e3
     algorithm: str = "Newton"  # "Newton" | "NewtonLineSearch" | "KrylovNewton"
     steps: int = 20  # steps to reach head_disp (monotonic), or per quarter cycle (cyclic)
