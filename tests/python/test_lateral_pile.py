@@ -79,8 +79,12 @@ def test_stiff_stick_converges(monotonic):
     assert H + r.pile_contact_force[0] + r.tip_reaction[0] == pytest.approx(0.0, abs=1e-8 * H)
     assert max(r.max_penetration) < 1e-12
     tied = run(numerics=Numerics(interface="tied", steps=1))
-    # Same head displacement (20 mm) in all three runs.
-    assert 1.05 * monotonic.head_force[-1] < H < tied.head_force[-1]
+    # Same head displacement (20 mm) in all three runs. Once the stick is stiff the answer no
+    # longer depends on G (the default is 1e5): rigid-plastic Coulomb friction; the gap makes the
+    # pile softer than the tied one.
+    assert monotonic.numerics.contact_G == 1e5
+    assert H == pytest.approx(monotonic.head_force[-1], rel=0.01)
+    assert H < tied.head_force[-1]
 
 
 def test_stiff_stick_first_step_converges_quadratically():
