@@ -6,17 +6,17 @@ opens and closes on both sides every cycle). Three maps per protocol, each again
 the contact method (BeamContact3D with Lagrange multipliers, or BeamContact3Dp with
 penalty = factor x E_soil R, factor 1e-2 .. 1e6):
 
-    steps      load-step size over two decades (1, 10, 100 steps per quarter cycle),
-               mu = 0.5, Newton
-    mu         friction coefficient 0.1, 0.5, 1.0 (10 steps, Newton)
-    algorithm  Newton, NewtonLineSearch, KrylovNewton (10 steps, mu = 0.5)
+    steps      load-step size over two decades (1, 10, 100 steps per quarter cycle; cyclic
+               1, 5, 50 to keep the run under an hour), mu = 0.5, Newton
+    mu         friction coefficient 0.1, 0.5, 1.0 (10 steps, cyclic 5; Newton)
+    algorithm  Newton, NewtonLineSearch, KrylovNewton (10 steps, cyclic 5; mu = 0.5)
     G          the contact material's stick stiffness G, 1e2 .. 1e6 kN/m per contact node
                (10 steps, mu = 0.5, Newton; elsewhere G = 1e5, the lateral pile's default)
 
 Each cell records: converged or not, Newton iterations per step, the largest
 interpenetration of a closed contact (relative to d), and the error of the head
-force at the load peaks against the reference: Lagrange multipliers, 100 steps
-per quarter, Newton, same mu and protocol (the finest converged answer). Every
+force at the load peaks against the reference: Lagrange multipliers at the finest
+step of the steps map, Newton, same mu and protocol (the finest converged answer). Every
 cell that fails is run again with adaptive stepping (cut on failure, grow back)
 to show where that rescues it.
 
@@ -41,12 +41,14 @@ RESULTS = ROOT / "benchmarks" / "results"
 IMG = ROOT / "docs" / "img"
 
 METHODS = ["Lagrange", 1e-2, 1e0, 1e2, 1e4, 1e6]  # Lagrange, then penalty factors
-STEPS = [1, 10, 100]
+STEPS = {"monotonic": [1, 10, 100], "cyclic": [1, 5, 50]}  # steps per quarter cycle
+MID_STEPS = {"monotonic": 10, "cyclic": 5}  # the other maps' step count
 MUS = [0.1, 0.5, 1.0]
 ALGORITHMS = ["Newton", "NewtonLineSearch", "KrylovNewton"]
 PROTOCOLS = ["monotonic", "cyclic"]
 STICK_G = [1e2, 1e3, 1e4, 1e5, 1e6]  # ContactMaterial3D stick stiffness G (kN/m per contact node)
-REFERENCE_STEPS = 100
+REFERENCE_STEPS = {"monotonic": 100, "cyclic": 50}  # = the finest steps cell (run once, cached)
+_CACHE = {}
 
 
 def method_label(method):
@@ -69,6 +71,13 @@ def peaks(result):
 
 
 def run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive=False, contact_G=None):
+    key = (method, steps, mu, algorithm, protocol, level, adaptive, contact_G)
+    if key not in _CACHE:
+        _CACHE[key] = _run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive, contact_G)
+    return dict(_CACHE[key])
+
+
+def _run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive, contact_G):
     p = dataclasses.replace(problem, mu=mu)
     t0 = time.perf_counter()
     try:
@@ -99,18 +108,19 @@ def peak_error(cell, reference):
     return max(abs(f - fr) for (_, f), (_, fr) in zip(got, ref)) / scale
 
 
-def maps(quick):
-    """(name, rows, columns, cell parameters) of the three maps."""
+def maps(quick, protocol):
+    """(name, rows, columns, cell parameters) of the maps."""
     methods = METHODS if not quick else ["Lagrange", 1e0, 1e4]
-    steps = STEPS if not quick else [1, 10]
+    steps = STEPS[protocol] if not quick else [1, 10]
+    mid = MID_STEPS[protocol]
     return [
         ("steps", methods, steps, lambda m, c: dict(method=m, steps=c, mu=0.5, algorithm="Newton")),
         ("mu", methods, MUS if not quick else [0.1, 1.0],
-         lambda m, c: dict(method=m, steps=10, mu=c, algorithm="Newton")),
+         lambda m, c: dict(method=m, steps=mid, mu=c, algorithm="Newton")),
         ("algorithm", methods, ALGORITHMS if not quick else ["Newton", "KrylovNewton"],
-         lambda m, c: dict(method=m, steps=10, mu=0.5, algorithm=c)),
+         lambda m, c: dict(method=m, steps=mid, mu=0.5, algorithm=c)),
         ("G", methods, STICK_G if not quick else [1e3, 1e5],
-         lambda m, c: dict(method=m, steps=10, mu=0.5, algorithm="Newton", contact_G=c)),
+         lambda m, c: dict(method=m, steps=mid, mu=0.5, algorithm="Newton", contact_G=c)),
     ]
 
 
@@ -134,7 +144,7 @@ def heatmap(name, protocol, methods, columns, cells, path):
     for ax, data, title in ((axes[0], err, "log10 error of peak head force"),
                             (axes[1], pen, "log10 penetration / d")):
         im = ax.imshow(data, cmap="viridis_r", aspect="auto", vmin=-8, vmax=0)
-        ax.set_xticks(range(len(columns)), [str(c) for c in columns])
+        ax.set_xticks(range(len(columns)), [str(c) for c in columns], rotation=15, fontsize=8)
         ax.set_yticks(range(len(methods)), [method_label(m) for m in methods])
         ax.set_xlabel(name)
         ax.set_title(title, fontsize=10)
@@ -148,7 +158,8 @@ def heatmap(name, protocol, methods, columns, cells, path):
                 else:
                     text = "fail"
                 ax.text(j, i, text, ha="center", va="center", fontsize=7,
-                        color="white" if cell["converged"] else "red")
+                        color=("black" if not math.isnan(data[i, j]) and data[i, j] < -4 else "white")
+                        if cell["converged"] else "red")
         fig.colorbar(im, ax=ax, shrink=0.8)
     fig.suptitle(f"Lateral pile, {protocol} head displacement: convergence against {name} "
                  "(text: Newton iterations per step; 'A: ok' = rescued by adaptive steps)", fontsize=9)
@@ -157,13 +168,33 @@ def heatmap(name, protocol, methods, columns, cells, path):
     plt.close(fig)
 
 
+def replot():
+    """Redraw docs/img/stability_*.png from benchmarks/results/stability_map*.json."""
+    for path in sorted(RESULTS.glob("stability_map*.json")):
+        if "quick" in path.name:
+            continue
+        data = json.loads(path.read_text())
+        for protocol, maps_ in data["maps"].items():
+            for name, cells in maps_.items():
+                if name == "references":
+                    continue
+                cells = {tuple(k.split(" | ")): v for k, v in cells.items()}
+                methods = [m for m in METHODS if (method_label(m), next(iter(cells))[1]) in cells]
+                columns = [c for c in dict.fromkeys(k[1] for k in cells)]
+                heatmap(name, protocol, methods, columns, cells, IMG / f"stability_{protocol}_{name}.png")
+                print(f"redrew stability_{protocol}_{name}.png")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true", help="a few cells only (a smoke run)")
     ap.add_argument("--level", default="coarse")
     ap.add_argument("--protocol", choices=("monotonic", "cyclic", "both"), default="both",
                     help="one protocol per process lets two cores run the two halves side by side")
+    ap.add_argument("--replot", action="store_true", help="redraw the heatmaps from the JSON results only")
     args = ap.parse_args()
+    if args.replot:
+        return replot()
     problem = LateralPile()
     started = time.perf_counter()
     results = {"level": args.level, "problem": dataclasses.asdict(problem), "maps": {}}
@@ -174,17 +205,19 @@ def main():
              f"{' --protocol ' + args.protocol if args.protocol != 'both' else ''}`.",
              f"Head displacement d = {problem.head_disp} m; penalty = factor x E_soil R = factor x "
              f"{problem.stiffness_scale:g} kN/m. Error: largest |F - F_ref| / max |F_ref| at the load peaks, "
-             f"reference = Lagrange, {REFERENCE_STEPS} steps per quarter, Newton, same mu.", ""]
+             f"reference = Lagrange, the finest step (monotonic {REFERENCE_STEPS['monotonic']}, cyclic "
+             f"{REFERENCE_STEPS['cyclic']} steps per quarter cycle), Newton, same mu. Cyclic: one full cycle "
+             "0 -> +d -> 0 -> -d -> 0.", ""]
     for protocol in (PROTOCOLS if args.protocol == "both" else [args.protocol]):
         references = {}
         for mu in sorted({0.5, *(MUS if not args.quick else [0.1, 1.0])}):
-            ref = run_cell(problem, "Lagrange", REFERENCE_STEPS if not args.quick else 20, mu, "Newton", protocol,
-                           args.level)
+            ref = run_cell(problem, "Lagrange", REFERENCE_STEPS[protocol] if not args.quick else 20, mu, "Newton",
+                           protocol, args.level)
             references[mu] = ref
             print(f"{protocol:9s} reference mu={mu}: converged={ref['converged']} "
                   f"{ref['iterations'] or 0:.2f} it/step {ref['wall']:.1f} s", flush=True)
         results["maps"][protocol] = {"references": {str(k): v for k, v in references.items()}}
-        for name, methods, columns, params in maps(args.quick):
+        for name, methods, columns, params in maps(args.quick, protocol):
             if name == "G" and protocol == "cyclic":
                 continue  # the stick stiffness is mapped under monotonic loading only (cost)
             cells = {}
