@@ -10,7 +10,8 @@ the soil's. The interface is either
                Kt tangential, Coulomb friction mu), which opens behind the pushed pile.
 
 The head cross-section is made rigid by rigidLink('beam', head, node) to a 6-dof head
-node on the axis, which carries the load; the pile base is fixed like the soil's base.
+node on the axis, which carries the load (y, rx and the torsion held, as the beam pile's
+head); the base cross-section is rigid and pinned, like the beam pile's tip.
 The geostatic stage runs with the pile held and the interface frictionless, then the
 friction comes back, the pile is released and the head is pushed along +x.
 
@@ -29,11 +30,12 @@ from .lateral_pile import LEVELS, LateralPile, radial_ratio, soil_levels
 
 SOIL, PILE = 1, 2
 HEAD = 900001  # the rigid head's node
+BASE = 900002  # the rigid base's node
 
 
 @dataclass(frozen=True)
 class SolidNumerics:
-    level: str = "coarse"
+    level: object = "coarse"  # a key of LEVELS or (n_theta, n_radial, n_z)
     interface: str = "contact"  # "contact" | "tied"
     penalty_factor: float = 1e3  # Kn = factor x E_soil R (per node pair)
     stick_G: float = 1e6  # Kt (kN/m per node pair): a stiff stick
@@ -77,7 +79,8 @@ class SolidPileModel:
 
     def build(self):
         p, n, m = self.p, self.n, self.m
-        n_theta, n_radial, n_z = LEVELS[n.level]
+        # A level name, or (n_theta, n_radial, n_z) for a level beyond the scene's three.
+        n_theta, n_radial, n_z = LEVELS[n.level] if isinstance(n.level, str) else n.level
         levels = soil_levels(p, n_z)  # the same soil mesh as the beam-pile models
         m.wipe()
         m.model("basic", "-ndm", 3, "-ndf", 3)
@@ -86,11 +89,9 @@ class SolidPileModel:
         self.soil = ogrid(m, pile_radius=p.pile_radius, outer_size=p.outer_radius, outer="circle", n_theta=n_theta,
                           n_radial=n_radial, radial_ratio=radial_ratio(p, n_radial), levels=levels, material_tag=SOIL,
                           body_force=(0.0, 0.0, -p.gamma) if n.interface == "contact" else (0.0, 0.0, 0.0))
-        fix_soil_boundary(m, self.soil)
+        self.fixed_soil = list(fix_soil_boundary(m, self.soil))
         self.pile = solid_cylinder(m, radius=p.pile_radius, levels=levels, n_theta=n_theta, material_tag=PILE)
         base = set(self.pile.groups["base"])
-        for t in base:
-            m.fix(t, 1, 1, 1)
         self.levels = levels
         k_normal = n.penalty_factor * p.stiffness_scale
         tag = max(m.getEleTags()) + 1
@@ -112,6 +113,12 @@ class SolidPileModel:
         m.node(HEAD, 0.0, 0.0, levels[0])
         for t in self.pile.groups["top"]:
             m.rigidLink("beam", HEAD, t)
+        # The base section is rigid and pinned (translations fixed, rotations free), as the beam
+        # pile's tip: a clamped base of stiff (locking) bricks would carry a shear of its own.
+        m.node(BASE, 0.0, 0.0, levels[-1])
+        for t in self.pile.groups["base"]:
+            m.rigidLink("beam", BASE, t)
+        m.fix(BASE, 1, 1, 1, 0, 0, 0)
         self.contacts = [e for (_, _, _, e) in self.pairs if e is not None]
         return self
 
@@ -121,7 +128,7 @@ class SolidPileModel:
         problem is linear, so the weight does not change its lateral response)."""
         p, m = self.p, self.m
         if not self.contacts:
-            m.fix(HEAD, 0, 1, 1, 1, 0, 1)
+            m.fix(HEAD, 0, 1, 0, 1, 0, 1)
             return None
         held = [t for t in self.pile.nodes if t not in set(self.pile.groups["base"])]
         m.fix(HEAD, 1, 1, 1, 1, 1, 1)  # holds the head face through the rigid links
@@ -140,7 +147,7 @@ class SolidPileModel:
                 m.remove("sp", t, d)
         for d in (1, 2, 3, 4, 5, 6):
             m.remove("sp", HEAD, d)
-        m.fix(HEAD, 0, 1, 1, 1, 0, 1)  # pushed along x: keep y, z, torsion and rx (symmetry)
+        m.fix(HEAD, 0, 1, 0, 1, 0, 1)  # pushed along x: y and rx (symmetry) and torsion held, as the beam pile
         return state
 
     def push(self, r):
@@ -169,9 +176,27 @@ class SolidPileModel:
         r.converged = True
         return r
 
+    def base_support(self):
+        """(Fx, Fy, Fz) the pinned base exerts on the pile: the pile bricks' resisting forces at the
+        base-face nodes (a retained node's reaction would leave out its constrained nodes)."""
+        m, base = self.m, set(self.pile.groups["base"])
+        total = [0.0, 0.0, 0.0]
+        for e in self.pile.elements:
+            nodes = m.eleNodes(e)
+            if base.intersection(nodes):
+                f = m.eleForce(e)
+                for a, t in enumerate(nodes):
+                    if t in base:
+                        for i in range(3):
+                            total[i] += f[3 * a + i]
+        return total
+
     def head_reaction(self):
-        self.m.reactions()
-        return -self.m.nodeReaction(HEAD, 1)
+        """Head force under an imposed head displacement, from global equilibrium along x (the
+        weight is vertical): minus the soil supports' and the pile base's reactions."""
+        m = self.m
+        m.reactions()
+        return -(sum(m.nodeReaction(t, 1) for t in self.fixed_soil) + self.base_support()[0])
 
     def interface_forces_on_pile(self):
         """[(x, y, z, Fx, Fy, Fz)]: the soil's action on each pile-surface node.
