@@ -5,22 +5,18 @@ slowly (they lock in bending). This runs (b) once more on the O-grid (n_theta, n
 (32, 16, 36), about 78,000 equations and 15 minutes, and extrapolates again from the three finest
 levels. Writes benchmarks/results/accuracy_reference_xfine.json.
 
-    PYTHONPATH=python python benchmarks/accuracy_reference_xfine.py
+    PYTHONPATH=python:benchmarks python benchmarks/accuracy_reference_xfine.py
 """
 import json
 import pathlib
 import time
 
+from accuracy_vs_cost import size
 from beamsolid.scenes import lateral_pile_solid as solid
-from beamsolid.scenes.lateral_pile import LEVELS, LateralPile
+from beamsolid.scenes.lateral_pile import LateralPile
 
 XFINE = (32, 16, 36)
 RESULTS = pathlib.Path(__file__).resolve().parent / "results"
-
-
-def size(divisions):
-    n_theta, n_radial, n_z = divisions
-    return (n_theta * n_radial * n_z) ** (-1.0 / 3.0)
 
 
 def main():
@@ -31,7 +27,7 @@ def main():
     r = solid.run(problem, solid.SolidNumerics(level=XFINE, interface="contact", penalty_factor=1e3, stick_G=1e5,
                                                control="force", head_load=700.0, steps=10))
     wall = time.perf_counter() - t0
-    hs = [size(LEVELS["medium"]), size(LEVELS["fine"]), size(XFINE)]
+    hs = [size("medium"), size("fine"), size(XFINE)]
     u_ref, p_u = solid.richardson(hs, [b["medium"]["u"], b["fine"]["u"], r.head_disp[-1]])
     M_ref, p_M = solid.richardson(hs, [b["medium"]["M"], b["fine"]["M"], r.max_moment])
     out = dict(divisions=XFINE, converged=r.converged, u=r.head_disp[-1], M=r.max_moment, wall=wall,

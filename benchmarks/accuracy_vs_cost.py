@@ -58,8 +58,8 @@ MODELS = {
 
 
 def size(level):
-    """Mesh size parameter h ~ (number of soil bricks)^(-1/3)."""
-    n_theta, n_radial, n_z = LEVELS[level]
+    """Mesh size parameter h ~ (number of soil bricks)^(-1/3); level: a LEVELS key or divisions."""
+    n_theta, n_radial, n_z = LEVELS[level] if isinstance(level, str) else level
     return (n_theta * n_radial * n_z) ** (-1.0 / 3.0)
 
 
