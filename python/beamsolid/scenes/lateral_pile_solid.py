@@ -176,20 +176,26 @@ class SolidPileModel:
         r.converged = True
         return r
 
+    def nodal_forces(self, elements, nodes):
+        """{node: [Fx, Fy, Fz]}: the summed resisting forces of `elements` at each of `nodes`."""
+        m, acc = self.m, {}
+        for e in elements:
+            tags = m.eleNodes(e)
+            if not nodes.intersection(tags):
+                continue
+            f = m.eleForce(e)
+            for a, t in enumerate(tags):
+                if t in nodes:
+                    v = acc.setdefault(t, [0.0, 0.0, 0.0])
+                    for i in range(3):
+                        v[i] += f[3 * a + i]
+        return acc
+
     def base_support(self):
         """(Fx, Fy, Fz) the pinned base exerts on the pile: the pile bricks' resisting forces at the
         base-face nodes (a retained node's reaction would leave out its constrained nodes)."""
-        m, base = self.m, set(self.pile.groups["base"])
-        total = [0.0, 0.0, 0.0]
-        for e in self.pile.elements:
-            nodes = m.eleNodes(e)
-            if base.intersection(nodes):
-                f = m.eleForce(e)
-                for a, t in enumerate(nodes):
-                    if t in base:
-                        for i in range(3):
-                            total[i] += f[3 * a + i]
-        return total
+        forces = self.nodal_forces(self.pile.elements, set(self.pile.groups["base"])).values()
+        return [sum(v[i] for v in forces) for i in range(3)]
 
     def head_reaction(self):
         """Head force under an imposed head displacement, from global equilibrium along x (the
@@ -212,20 +218,9 @@ class SolidPileModel:
             return out
         last = len(self.levels) - 1  # the base ring is fixed on both sides: not part of the interface
         surface = {soil for (k, soil, _, _) in self.pairs if k < last}
-        acc = {}
-        for e in self.soil.elements:
-            nodes = m.eleNodes(e)
-            if not surface.intersection(nodes):
-                continue
-            f = m.eleForce(e)
-            for a, t in enumerate(nodes):
-                if t in surface:
-                    v = acc.setdefault(t, [0.0, 0.0, 0.0])
-                    for i in range(3):
-                        v[i] -= f[3 * a + i]
-        for t, v in acc.items():
+        for t, v in self.nodal_forces(self.soil.elements, surface).items():
             x = m.nodeCoord(t)
-            out.append((x[0], x[1], x[2], v[0], v[1], v[2]))
+            out.append((x[0], x[1], x[2], -v[0], -v[1], -v[2]))
         return out
 
     def profiles(self, r, head_force):
