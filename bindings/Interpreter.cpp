@@ -40,6 +40,7 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"loadPlugin", &Interpreter::loadPlugin},
       {"setParameter", &Interpreter::setParameter},
       {"updateMaterialStage", &Interpreter::updateMaterialStage},
+      {"InitialStateAnalysis", &Interpreter::initialStateAnalysis},
       {"section", &Interpreter::section},
       {"patch", &Interpreter::patch},
       {"layer", &Interpreter::layer},

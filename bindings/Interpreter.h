@@ -65,6 +65,7 @@ class Interpreter {
   Result loadPlugin(CommandArgs&);
   Result setParameter(CommandArgs&);
   Result updateMaterialStage(CommandArgs&);
+  Result initialStateAnalysis(CommandArgs&);
 
   // --- sections and beam integration (InterpreterSections.cpp) ---
   Result section(CommandArgs&);

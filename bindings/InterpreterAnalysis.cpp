@@ -1,4 +1,5 @@
 // Analysis commands of the Interpreter.
+#include <algorithm>
 #include <iostream>
 
 #include "analysis/EigenAnalysis.h"
@@ -155,8 +156,11 @@ Result Interpreter::testNorm(CommandArgs& a) {
   a.expectEnd();
   if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
   std::vector<double> norms = components_.test->norms();
-  if (static_cast<int>(norms.size()) < components_.test->maxIterations())
-    norms.resize(components_.test->maxIterations(), 0.0);
+  // OpenSees pads the list with zeros to maxIter entries; a huge maxIter
+  // (e.g. 2^31 - 1, "never give up") must not allocate gigabytes for it.
+  constexpr int maxPadded = 100000;
+  const int length = std::min(components_.test->maxIterations(), maxPadded);
+  if (static_cast<int>(norms.size()) < length) norms.resize(length, 0.0);
   return norms;
 }
 

@@ -446,6 +446,14 @@ Result Interpreter::setParameter(CommandArgs& a) {
   return {};
 }
 
+Result Interpreter::initialStateAnalysis(CommandArgs& a) {
+  const std::string flag = a.nextString("flag");
+  a.expectEnd();
+  if (flag != "on" && flag != "off") a.fail("flag must be 'on' or 'off', got '" + flag + "'");
+  domain_->initialStateAnalysis(flag == "on");
+  return {};
+}
+
 Result Interpreter::updateMaterialStage(CommandArgs& a) {
   int matTag = 0, stage = 0;
   bool haveMat = false, haveStage = false;

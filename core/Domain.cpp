@@ -1,6 +1,7 @@
 #include "core/Domain.h"
 
 #include <algorithm>
+#include <set>
 
 #include "core/OpenSeesError.h"
 
@@ -271,6 +272,18 @@ void Domain::revertToStart() {
   currentTime_ = committedTime_ = 0.0;
   applyLoad(0.0);
   update();
+}
+
+void Domain::initialStateAnalysis(bool on) {
+  for (auto& [tag, e] : elements_) e->initialStateAnalysis(on);
+  if (on) return;
+  std::set<int> multipliers;
+  for (auto& [tag, e] : elements_)
+    for (int t : e->multiplierNodes()) multipliers.insert(t);
+  for (auto& [tag, n] : nodes_)
+    if (!multipliers.count(tag)) n->revertToStart();
+  update();
+  for (auto& [tag, e] : elements_) e->commitState();
 }
 
 void Domain::setLoadConst() {

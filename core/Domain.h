@@ -127,6 +127,12 @@ class Domain {
   void commit();
   void revertToLastCommit();
   void revertToStart();
+  // InitialStateAnalysis('on' | 'off'). 'off' zeroes the displacements,
+  // velocities and accelerations of every node but the Lagrange multiplier
+  // nodes (their dofs are forces) and commits the elements there: wrapped
+  // materials (InitialStateAnalysisWrapper) keep their stress, contact
+  // elements re-project onto the reference geometry. Nothing is recorded.
+  void initialStateAnalysis(bool on);
   // loadConst: every existing pattern keeps its current factor.
   void setLoadConst();
   // Reactions: element resisting forces minus applied nodal loads.

@@ -64,6 +64,11 @@ class Element {
   // updateMaterialStage('-material', matTag, '-stage', s): forwarded to
   // every element, which passes it to its copies of material matTag.
   virtual void updateMaterialStage(int materialTag, int stage);
+  // InitialStateAnalysis('on' | 'off'): passed to the element's materials.
+  virtual void initialStateAnalysis(bool) {}
+  // Tags of the element's Lagrange multiplier nodes: forces, not
+  // displacements, so InitialStateAnalysis('off') keeps their values.
+  virtual std::vector<int> multiplierNodes() const { return {}; }
 
   // Solver needs: a tangent that is unsymmetric, or has zero diagonal
   // entries (Lagrange multipliers), cannot go to an SPD-only solver.

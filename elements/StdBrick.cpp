@@ -268,6 +268,10 @@ void StdBrick::updateMaterialStage(int materialTag, int stage) {
     if (m->tag() == materialTag) m->updateStage(stage);
 }
 
+void StdBrick::initialStateAnalysis(bool on) {
+  for (auto& m : materials_) m->initialStateAnalysis(on);
+}
+
 void StdBrick::print(std::ostream& os) const {
   os << "Element " << tag() << " type stdBrick nodes";
   for (int t : nodeTags()) os << ' ' << t;

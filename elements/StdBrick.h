@@ -64,6 +64,7 @@ class StdBrick : public Element {
   // Forwarded to every Gauss point material; true when any accepted it.
   bool setParameter(const std::vector<std::string>& args, double value) override;
   void updateMaterialStage(int materialTag, int stage) override;
+  void initialStateAnalysis(bool on) override;
 
   void print(std::ostream& os) const override;
 

@@ -57,6 +57,8 @@ class BeamContact3D : public BeamContactElement {
   bool shouldRelease() const { return multiplier_.shouldRelease(); }
   double gapTolerance() const { return multiplier_.gapTolerance(); }
   double forceTolerance() const { return multiplier_.forceTolerance(); }
+  // The last node carries lambda.
+  std::vector<int> multiplierNodes() const override { return {nodeTags().back()}; }
 
  protected:
   void setDomain(Domain& domain) override;

@@ -45,6 +45,8 @@ class BeamEndContact3D : public BeamEndContactElement {
   bool shouldRelease() const { return multiplier_.shouldRelease(); }
   double gapTolerance() const { return multiplier_.gapTolerance(); }
   double forceTolerance() const { return multiplier_.forceTolerance(); }
+  // The last node carries lambda.
+  std::vector<int> multiplierNodes() const override { return {nodeTags().back()}; }
 
  protected:
   void setDomain(Domain& domain) override;

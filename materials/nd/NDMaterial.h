@@ -37,6 +37,9 @@ class NDMaterial {
 
   // updateMaterialStage; materials without stages ignore it.
   virtual void updateStage(int) {}
+  // InitialStateAnalysis('on' | 'off'); only InitialStateAnalysisWrapper
+  // keeps its state through the 'off' that zeroes the displacements.
+  virtual void initialStateAnalysis(bool) {}
   virtual bool setParameter(const std::vector<std::string>&, double) { return false; }
 
   // 'stress', 'strain', 'tangent' by default.

@@ -66,7 +66,7 @@ def geostatic_stress_error(ops, elements, gamma, K0, z_surface=0.0):
 
 
 def geostatic_stage(ops, *, soil_elements, gamma, K0, z_surface=0.0, contact_materials=(), steps=1,
-                    tol=1e-8, max_iter=25, system="UmfPack", check_tol=None):
+                    tol=1e-8, max_iter=25, system="UmfPack", check_tol=None, initial_state=False):
     """Run the elastic gravity stage, check it, then ``loadConst('-time', 0)``.
 
     The soil elements must carry their weight as body forces (stdBrick b3 = -gamma)
@@ -76,7 +76,16 @@ def geostatic_stage(ops, *, soil_elements, gamma, K0, z_surface=0.0, contact_mat
     after it. ``check_tol``: raise RuntimeError when a stress error exceeds it (None:
     only report). Returns a GeostaticState; the analysis objects are wiped afterwards
     so the next stage defines its own.
+
+    ``initial_state=True`` runs the stage inside ``InitialStateAnalysis('on')`` /
+    ``('off')``: afterwards every displacement is zero again (the settlement of
+    switching gravity on is an artifact, not part of the problem), the stresses
+    stay, and contact elements see the reference geometry. The soil materials
+    must then be ``InitialStateAnalysisWrapper`` s; the stresses are checked
+    again after ``'off'`` and a RuntimeError says so if they were lost.
     """
+    if initial_state:
+        ops.InitialStateAnalysis("on")
     for mat in contact_materials:
         ops.updateMaterialStage("-material", mat, "-stage", 0)
     ops.constraints("Transformation")
@@ -96,6 +105,14 @@ def geostatic_stage(ops, *, soil_elements, gamma, K0, z_surface=0.0, contact_mat
     if check_tol is not None and max(error_v, error_h) > check_tol:
         raise RuntimeError(f"geostatic stage: stresses off the closed form by {max(error_v, error_h):.3e} "
                            f"(relative to gamma * depth), more than check_tol {check_tol:.1e}")
+    if initial_state:
+        ops.InitialStateAnalysis("off")
+        kept_v, kept_h, _ = geostatic_stress_error(ops, soil_elements, gamma, K0, z_surface)
+        lost = max(kept_v - error_v, kept_h - error_h)
+        if lost > max(1e-6, 10.0 * max(error_v, error_h)):
+            raise RuntimeError("geostatic stage: InitialStateAnalysis('off') lost the gravity stresses (error "
+                               f"{max(kept_v, kept_h):.3e} after it); wrap the soil materials in "
+                               "nDMaterial('InitialStateAnalysisWrapper', tag, innerTag, 3)")
     ops.loadConst("-time", 0.0)
     ops.wipeAnalysis()
     for mat in contact_materials:

@@ -67,6 +67,16 @@ def test_test_norm_has_max_iter_values_and_queries_need_a_test(ops):
     assert norms[ops.testIter():] == [0.0] * (10 - ops.testIter())
 
 
+def test_test_norm_pads_at_most_100000_values(ops):
+    # A "never give up" maxIter of 2^31 - 1 must not allocate 16 GB of zeros (found by the fuzzer).
+    _two_bars(ops, "NormUnbalance")
+    ops.test("NormUnbalance", 1e-12, 2**31 - 1)
+    assert ops.analyze(1) == 0
+    norms = ops.testNorm()
+    assert len(norms) == 100000
+    assert norms[0] == pytest.approx(B1, rel=1e-12) and norms[ops.testIter():ops.testIter() + 5] == [0.0] * 5
+
+
 def test_failure_message_prints_small_norms_readably(ops, capfd):
     # NormDispIncr needs three iterations here; with two the step fails after
     # norms 0.02, 0.02, and the warning shows them as numbers, not 0.000000.

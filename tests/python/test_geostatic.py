@@ -6,11 +6,16 @@ from beamsolid.geostatic import geostatic_stage, geostatic_stress_error
 from beamsolid.scenes.donut_pullout import CONTACT, DonutModel, DonutPullout
 
 
-def block(m, nu, gamma, n=3, depth=4.0, width=2.0, sides_on_rollers=True):
-    """A soil block [0, w]^2 x [-depth, 0] of n x n x n stdBricks carrying their weight."""
+def block(m, nu, gamma, n=3, depth=4.0, width=2.0, sides_on_rollers=True, wrapped=False):
+    """A soil block [0, w]^2 x [-depth, 0] of n x n x n stdBricks carrying their weight
+    (wrapped: in an InitialStateAnalysisWrapper, tag 1, of the elastic material 2)."""
     m.wipe()
     m.model("basic", "-ndm", 3, "-ndf", 3)
-    m.nDMaterial("ElasticIsotropic", 1, 30e3, nu)
+    if wrapped:
+        m.nDMaterial("ElasticIsotropic", 2, 30e3, nu)
+        m.nDMaterial("InitialStateAnalysisWrapper", 1, 2, 3)
+    else:
+        m.nDMaterial("ElasticIsotropic", 1, 30e3, nu)
     tag = lambda i, j, k: 1 + i + (n + 1) * (j + (n + 1) * k)
     for k in range(n + 1):
         for j in range(n + 1):
@@ -64,3 +69,28 @@ def test_donut_with_a_held_pile_and_frictionless_contacts():
     assert model.normal_sum() == pytest.approx(s.faceted_normal_sum, rel=1e-10)
     ev, eh, _ = geostatic_stress_error(m, soil, s.gamma, s.K0)
     assert max(ev, eh) < 1e-10
+
+
+def test_initial_state_zeroes_the_settlement_and_keeps_the_stresses():
+    m, gamma, nu = Model(), 18.0, 0.3
+    elements = block(m, nu, gamma, wrapped=True)
+    state = geostatic_stage(m, soil_elements=elements, gamma=gamma, K0=nu / (1 - nu), check_tol=1e-10,
+                            initial_state=True)
+    assert state.error_v < 1e-10
+    assert max(abs(v) for t in m.getNodeTags() for v in m.nodeDisp(t)) == 0.0
+    ev, eh, k0 = geostatic_stress_error(m, elements, gamma, nu / (1 - nu))
+    assert max(ev, eh) < 1e-10 and k0 == pytest.approx(nu / (1 - nu), rel=1e-10)
+    # The weight stays balanced at the reference geometry: a further step moves nothing.
+    m.integrator("LoadControl", 1.0)
+    m.test("NormUnbalance", 1e-8, 5)
+    m.algorithm("Newton")
+    m.analysis("Static")
+    assert m.analyze(1) == 0
+    assert max(abs(v) for t in m.getNodeTags() for v in m.nodeDisp(t)) < 1e-14
+
+
+def test_initial_state_without_the_wrapper_is_caught():
+    m, gamma = Model(), 18.0
+    elements = block(m, 0.3, gamma)  # plain ElasticIsotropic: 'off' re-evaluates it at zero strain
+    with pytest.raises(RuntimeError, match="InitialStateAnalysisWrapper"):
+        geostatic_stage(m, soil_elements=elements, gamma=gamma, K0=0.3 / 0.7, initial_state=True)

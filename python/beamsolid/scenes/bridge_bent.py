@@ -55,7 +55,7 @@ LEVELS = {
     "fine": (16, 4, 14, 4),
 }
 
-SOIL, CONTACT = 1, 2  # material tags
+SOIL, CONTACT, SOIL_ELASTIC = 1, 2, 3  # material tags (SOIL wraps SOIL_ELASTIC)
 PILE_TRANSF, CAP_TRANSF = 1, 2
 
 
@@ -133,6 +133,7 @@ class PileContacts:
     gap: list = field(default_factory=list)
     force_x: list = field(default_factory=list)  # contact force on the soil node
     force_y: list = field(default_factory=list)
+    handovers: list = field(default_factory=list)  # hand-overs to a neighbouring segment so far
     elements: list = field(default_factory=list)
 
 
@@ -154,6 +155,7 @@ class BentResult:
     contact_x: list = field(default_factory=list)  # per step: per pile, sum of contact force x on the soil
     contact_y: list = field(default_factory=list)
     status: list = field(default_factory=list)  # per step: per pile, the contact statuses in element order
+    handovers: list = field(default_factory=list)  # per step: per pile, each contact's hand-overs so far
     soil_reaction_x: list = field(default_factory=list)  # per step: x reactions on the soil's x faces
     iterations: list = field(default_factory=list)  # per push step (summed over cuts)
     cuts: int = 0  # steps halved by the adaptive stepper
@@ -183,7 +185,9 @@ class BentModel:
         d = s.divisions
         m.wipe()
         m.model("basic", "-ndm", 3, "-ndf", 3)
-        m.nDMaterial("ElasticIsotropic", SOIL, s.soil_E, s.soil_nu)
+        # Wrapped so that the gravity stage's stresses survive InitialStateAnalysis('off').
+        m.nDMaterial("ElasticIsotropic", SOIL_ELASTIC, s.soil_E, s.soil_nu)
+        m.nDMaterial("InitialStateAnalysisWrapper", SOIL, SOIL_ELASTIC, 3)
         m.nDMaterial("ContactMaterial3D", CONTACT, s.mu, s.stick, 0.0, 0.0)
         levels = s.levels()
         self.soil = pile_group(m, piles=[(x, 0.0) for x in s.pile_x], pile_radius=s.pile_radius,
@@ -237,6 +241,7 @@ class BentModel:
             f = m.eleResponse(e, "force")
             c.force_x.append(f[0])
             c.force_y.append(f[1])
+            c.handovers.append(int(m.eleResponse(e, "handovers")[0]))
             c.elements.append(e)
         return c
 
@@ -244,7 +249,7 @@ class BentModel:
         m, s = self.m, self.s
         r.cap_disp.append(m.nodeDisp(self.cap, 1))
         r.cap_force.append(m.getLoadFactor(2) if r.cap_disp[-1] != 0.0 else 0.0)
-        shear, n_open, depth, gmax, nsum, fsum, fx, fy, status = [], [], [], [], [], [], [], [], []
+        shear, n_open, depth, gmax, nsum, fsum, fx, fy, status, moved = [], [], [], [], [], [], [], [], [], []
         for p, pile in enumerate(self.piles):
             shear.append(m.eleResponse(pile.elements[0], "force")[0])
             c = self.pile_contacts(p)
@@ -257,6 +262,7 @@ class BentModel:
             fx.append(sum(c.force_x))
             fy.append(sum(c.force_y))
             status.append(c.status)
+            moved.append(c.handovers)
         r.head_shear.append(shear)
         r.open_contacts.append(n_open)
         r.gap_depth.append(depth)
@@ -266,6 +272,7 @@ class BentModel:
         r.contact_x.append(fx)
         r.contact_y.append(fy)
         r.status.append(status)
+        r.handovers.append(moved)
         # The soil's x faces carry the push (bricks only: an independent path from the contacts).
         m.reactions()
         r.soil_reaction_x.append(sum(m.nodeReaction(n, 1) for n in self.x_faces))
@@ -277,7 +284,8 @@ class BentModel:
             for n in pile.nodes:
                 m.fix(n, 1, 1, 1, 1, 1, 1)
         state = geostatic_stage(m, soil_elements=self.soil.elements, gamma=s.gamma, K0=s.K0,
-                                contact_materials=[CONTACT], tol=s.tol, max_iter=s.max_iter, check_tol=1e-8)
+                                contact_materials=[CONTACT], tol=s.tol, max_iter=s.max_iter, check_tol=1e-8,
+                                initial_state=True)
         r.geostatic_iterations = state.iterations
         r.geostatic_normal_sum = [sum(self.pile_contacts(p).normal) for p in range(len(self.piles))]
         for pile in self.piles:

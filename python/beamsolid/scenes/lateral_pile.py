@@ -117,7 +117,7 @@ from ..stepping import adaptive_analyze
 # shallowest (the pile bends within the top lc ~ 10 m; the surface is where the gap opens).
 VERTICAL_GROWTH = 6.0
 
-SOIL, CONTACT = 1, 2  # material tags
+SOIL, CONTACT, SOIL_ELASTIC = 1, 2, 3  # material tags (SOIL wraps SOIL_ELASTIC)
 TRANSF = 1
 TS_PUSH, PAT_PUSH = 2, 2
 FIRST_SOIL_NODE = 1001
@@ -150,6 +150,10 @@ class Numerics:
     min_fraction: float = 1.0 / 64  # adaptive: smallest step, as a fraction of the nominal one
     tol: float = 1e-6  # NormUnbalance (kN; the multiplier rows in m)
     max_iter: int = 25
+    # Zero the displacements after the gravity stage (InitialStateAnalysis), keeping its stresses.
+    # Without it the soil settles by gamma H^2 / (2 M) = 0.15 m at the surface while the pile is
+    # held, and slides that far down the beam pile before the push (docs/lateral_pile.md).
+    initial_state: bool = True
 
     def __post_init__(self):
         if self.level not in LEVELS:
@@ -267,7 +271,9 @@ class LateralPileModel:
             m.fix(tag, 1, 1, 1, 1, 1, 1)  # geostatic stage: the pile is held
 
         m.model("basic", "-ndm", 3, "-ndf", 3)
-        m.nDMaterial("ElasticIsotropic", SOIL, p.soil_E, p.soil_nu)
+        # Wrapped so that the gravity stage's stresses survive InitialStateAnalysis('off').
+        m.nDMaterial("ElasticIsotropic", SOIL_ELASTIC, p.soil_E, p.soil_nu)
+        m.nDMaterial("InitialStateAnalysisWrapper", SOIL, SOIL_ELASTIC, 3)
         self.mesh = mesh = ogrid(m, pile_radius=p.pile_radius, outer_size=p.outer_radius, outer="circle",
                                  n_theta=n_theta, n_radial=n_radial, radial_ratio=radial_ratio(p, n_radial),
                                  levels=levels, material_tag=SOIL, first_node=FIRST_SOIL_NODE,
@@ -310,7 +316,8 @@ class LateralPileModel:
                                                # Exact only with Lagrange multipliers: a penalty interface
                                                # yields by sigma_h A / penalty, and tied to the held pile the
                                                # soil cannot settle (irrelevant to the linear tied push).
-                                               check_tol=1e-8 if self.n.interface == "contact" else None)
+                                               check_tol=1e-8 if self.n.interface == "contact" else None,
+                                               initial_state=self.n.initial_state)
 
     def release(self):
         """Friction on; the pile free but for its pinned tip and the torsion at its head; the

@@ -28,7 +28,7 @@ from ..mesh import fix_soil_boundary, ogrid, solid_cylinder
 from ..model import Model
 from .lateral_pile import LEVELS, LateralPile, radial_ratio, soil_levels
 
-SOIL, PILE = 1, 2
+SOIL, PILE, SOIL_ELASTIC = 1, 2, 3  # SOIL wraps SOIL_ELASTIC (InitialStateAnalysis)
 HEAD = 900001  # the rigid head's node
 BASE = 900002  # the rigid base's node
 
@@ -84,7 +84,8 @@ class SolidPileModel:
         levels = soil_levels(p, n_z)  # the same soil mesh as the beam-pile models
         m.wipe()
         m.model("basic", "-ndm", 3, "-ndf", 3)
-        m.nDMaterial("ElasticIsotropic", SOIL, p.soil_E, p.soil_nu)
+        m.nDMaterial("ElasticIsotropic", SOIL_ELASTIC, p.soil_E, p.soil_nu)
+        m.nDMaterial("InitialStateAnalysisWrapper", SOIL, SOIL_ELASTIC, 3)
         m.nDMaterial("ElasticIsotropic", PILE, p.pile_E, p.pile_nu)
         self.soil = ogrid(m, pile_radius=p.pile_radius, outer_size=p.outer_radius, outer="circle", n_theta=n_theta,
                           n_radial=n_radial, radial_ratio=radial_ratio(p, n_radial), levels=levels, material_tag=SOIL,
@@ -139,7 +140,8 @@ class SolidPileModel:
             m.setParameter("-val", 0.0, "-ele", *self.contacts, "friction")
         # The penalty interface yields a little (the soil presses into the pile by sigma_h A / Kn):
         # not exactly uniaxial strain, so the stress error is reported, not enforced.
-        state = geostatic_stage(m, soil_elements=self.soil.elements, gamma=p.gamma, K0=p.K0, tol=1e-6)
+        state = geostatic_stage(m, soil_elements=self.soil.elements, gamma=p.gamma, K0=p.K0, tol=1e-6,
+                                initial_state=True)
         if self.contacts:
             m.setParameter("-val", 1.0, "-ele", *self.contacts, "friction")
         for t in below_head:
