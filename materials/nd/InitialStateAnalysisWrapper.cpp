@@ -8,7 +8,10 @@
 namespace beamsolid {
 
 InitialStateAnalysisWrapper::InitialStateAnalysisWrapper(int tag, std::unique_ptr<NDMaterial> inner)
-    : NDMaterial(tag), inner_(std::move(inner)), initialStrain_(Vector::Zero(inner_->strain().size())) {}
+    : NDMaterial(tag),
+      inner_(std::move(inner)),
+      initialStrain_(Vector::Zero(inner_->strain().size())),
+      totalStrain_(initialStrain_) {}
 
 std::unique_ptr<NDMaterial> InitialStateAnalysisWrapper::clone(const std::string& kind) const {
   if (kind != "ThreeDimensional") return nullptr;
@@ -24,7 +27,8 @@ void InitialStateAnalysisWrapper::setTrialStrain(const Eigen::Ref<const Vector>&
     throw OpenSeesError("nDMaterial InitialStateAnalysisWrapper " + std::to_string(tag()) +
                         ": expected a strain vector of size " + std::to_string(initialStrain_.size()) + ", got " +
                         std::to_string(strain.size()));
-  inner_->setTrialStrain(strain + initialStrain_);
+  totalStrain_.noalias() = strain + initialStrain_;
+  inner_->setTrialStrain(totalStrain_);
 }
 
 void InitialStateAnalysisWrapper::revertToStart() {

@@ -42,6 +42,7 @@ class InitialStateAnalysisWrapper : public NDMaterial {
  private:
   std::unique_ptr<NDMaterial> inner_;
   Vector initialStrain_;
+  Vector totalStrain_;  // eps + eps0, kept so that a Gauss-point update does not allocate
 };
 
 }  // namespace beamsolid
