@@ -70,7 +70,7 @@ void BeamContactElement::setUpGeometry(Domain& domain) {
       throw OpenSeesError(context() + ": " + e.what());
     }
   }
-  inContact_ = initiallyInContact_ && ownsNode();
+  inContact_ = initiallyInContact_ && ownsNode(kHandOverTolerance);
   committedSlip_.setZero();
 }
 
@@ -79,11 +79,11 @@ void BeamContactElement::initializeOnPile(double xiStart) {
                        pile_->frame(segment_ + 1, segment_), radius_, xiStart);
 }
 
-bool BeamContactElement::ownsNode() const {
+bool BeamContactElement::ownsNode(double endAllowance) const {
   if (!pile_) return geometry_.inBounds();
   const double xi = geometry_.xi();
-  if (segment_ == 0 && xi < -kHandOverTolerance) return false;
-  if (segment_ == pile_->numSegments() - 1 && xi > 1.0 + kHandOverTolerance) return false;
+  if (segment_ == 0 && xi < -endAllowance) return false;
+  if (segment_ == pile_->numSegments() - 1 && xi > 1.0 + endAllowance) return false;
   return true;
 }
 
@@ -210,7 +210,7 @@ void BeamContactElement::revertToStart() {
   } catch (const OpenSeesError& e) {
     throw OpenSeesError(context() + ": " + e.what());
   }
-  inContact_ = initiallyInContact_ && ownsNode();
+  inContact_ = initiallyInContact_ && ownsNode(kHandOverTolerance);
   activeInUpdate_ = false;
   normalForce_ = 0.0;
   mechanicalForce_.setZero();

@@ -52,6 +52,14 @@ class BeamContactElement : public Element {
   // Hand-over hysteresis in xi: a chained element moves to the next segment
   // only once xi_c > 1 + tol (or < -tol).
   static constexpr double kHandOverTolerance = 1e-9;
+  // How far (in xi of the end segment) a chained element keeps a node that has
+  // moved beyond the pile's head or tip. A node level with the end stands for
+  // the half soil layer below it; releasing it once it lies any distance beyond
+  // (the tilt R*theta of a bent pile's end section does this at the first
+  // step) dropped the most loaded contacts of a laterally loaded pile. It is
+  // released once less than half its tributary height still faces the pile:
+  // a quarter segment beyond the end, for soil levels at the beam nodes.
+  static constexpr double kEndAllowance = 0.25;
   // The pile of the chained form (nullptr without '-pile'), the index of the
   // element's current segment in it (-1 without), and how many hand-overs
   // happened since the start.
@@ -59,8 +67,10 @@ class BeamContactElement : public Element {
   int segment() const { return segment_; }
   int handOverCount() const { return handOvers_; }
   // Whether the element holds its node's projection: 0 < xi_c < 1 without a
-  // chain; with a chain anywhere along the pile (not beyond its ends).
-  bool ownsNode() const;
+  // chain; with a chain anywhere along the pile and up to `endAllowance`
+  // beyond its ends (kEndAllowance once the analysis runs; kHandOverTolerance
+  // at set-up, so that a node that starts beyond an end is never in contact).
+  bool ownsNode(double endAllowance = kEndAllowance) const;
   // The status of the current step (decided at the last commit, C20).
   bool inContact() const { return inContact_; }
   // Normal force t_n of the trial state (lambda or the penalty force); zero

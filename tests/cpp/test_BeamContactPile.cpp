@@ -154,12 +154,24 @@ TEST(BeamContactPile, HandOverKeepsFrictionStateLambdaAndStatusExactly) {
   EXPECT_EQ(e.lambda(), lambda);
   EXPECT_TRUE(e.inContact());
 
-  // Beyond the pile's top the node is released; the element stays on the last segment.
+  // Just beyond the pile's top (xi = 1.1996, within the end allowance of a
+  // quarter segment) the node is still held: it stands for the soil below it.
   setDisp(d, 10, Vector(Vector3(0.0, 0.0, 1.2)));
   d.update();
   d.commit();
   EXPECT_EQ(e.segment(), 1);
-  EXPECT_GT(e.geometry().xi(), 1.0);
+  EXPECT_NEAR(e.geometry().xi(), z0 + 1.2 - 2.0, 1e-12);
+  EXPECT_TRUE(e.ownsNode());
+  EXPECT_TRUE(e.inContact());
+
+  // Further (xi = 1.2996 > 1 + kEndAllowance) it is released; the element
+  // stays on the last segment.
+  setDisp(d, 10, Vector(Vector3(0.0, 0.0, 1.3)));
+  d.update();
+  d.commit();
+  EXPECT_EQ(e.segment(), 1);
+  EXPECT_GT(e.geometry().xi(), 1.0 + BeamContactElement::kEndAllowance);
+  EXPECT_FALSE(e.ownsNode());
   EXPECT_FALSE(e.inContact());
 
   // revertToStart: back on the first segment and its nodes.

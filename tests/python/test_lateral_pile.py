@@ -10,9 +10,9 @@
   head node (balance to 1e-8 of the peak moment, and under 2 % of it).
 - Monotonic push: the gap opens behind the pile (x < 0) only and deepens monotonically.
 - Cyclic push (Lagrange contact): converges, the gap switches side each half cycle.
-- A stiff stick (G = 1e6, Lagrange): converges (it cycled between sliding up and down at the
-  ground-surface nodes before ContactMaterial3D::setIterate), balances, and is stiffer than
-  G = 1e3 (~9 %) yet softer than the bonded pile.
+- A stiff stick (G = 1e6, Lagrange, 10 steps): converges (it cycled between sliding up and
+  down at the ground-surface nodes before ContactMaterial3D::setIterate), balances, agrees
+  with G = 1e5 in 5 steps to 0.3 %, and is softer than the bonded pile.
 - Adaptive stepping: a cyclic penalty run in one step per quarter cycle fails, adaptive
   steps get through.
 - The CLI writes its recorder files, a parsable .pvd and PNGs.
@@ -71,12 +71,17 @@ def test_gap_opens_behind_the_pile_and_deepens(monotonic):
     depths = r.gap_depth
     assert all(b >= a for a, b in zip(depths, depths[1:]))
     assert depths[-1] > 0.0 and depths == r.gap_depth_back
-    assert not any(r.gap_depth_front)  # nothing opens in front of the pile
+    # Nothing opens in front of the pile: counted, since the ground surface is at depth 0. (The
+    # head ring in front once opened here: the end section tilts as the pile bends, its soil
+    # nodes lay a fraction of a mm beyond the pile's head and were released, overlapping the
+    # pile by 14 mm at 20 mm; BeamContactElement::kEndAllowance.)
+    assert not any(r.n_open_front) and r.n_open_back[-1] == r.n_open[-1] > 0
+    assert max(r.max_open_overlap) < 1e-12  # no released node overlaps the pile
     assert all(b >= a for a, b in zip(r.n_open, r.n_open[1:]))
 
 
 def test_stiff_stick_converges(monotonic):
-    r = run(numerics=Numerics(contact_G=1e6, steps=5))
+    r = run(numerics=Numerics(contact_G=1e6, steps=10))
     assert r.converged and r.failed_at is None
     assert max(r.iterations) <= 8  # was: no convergence in 25 iterations at the first step
     H = r.head_force[-1]
@@ -84,10 +89,12 @@ def test_stiff_stick_converges(monotonic):
     assert max(r.max_penetration) < 1e-12
     tied = run(numerics=Numerics(interface="tied", steps=1))
     # Same head displacement (20 mm) in all three runs. Once the stick is stiff the answer no
-    # longer depends on G (the default is 1e5): rigid-plastic Coulomb friction; the gap makes the
-    # pile softer than the tied one.
-    assert monotonic.numerics.contact_G == 1e5
-    assert H == pytest.approx(monotonic.head_force[-1], rel=0.01)
+    # longer depends on G (the default is 1e5) nor on the step count (10 here, 5 there):
+    # rigid-plastic Coulomb friction (measured 897.45 against 897.57 kN; 790.7 against 863.7
+    # at 10 steps while the head ring was released); the gap makes the pile softer than the
+    # tied one.
+    assert monotonic.numerics.contact_G == 1e5 and monotonic.numerics.steps == 5
+    assert H == pytest.approx(monotonic.head_force[-1], rel=0.003)
     assert H < tied.head_force[-1]
 
 
@@ -115,8 +122,8 @@ def test_cyclic_gap_switches_side():
     t = {round(x, 9): k for k, x in enumerate(r.time)}
     plus, minus = t[1.0], t[3.0]  # peaks +d and -d
     assert r.head_disp[plus] == pytest.approx(0.02) and r.head_disp[minus] == pytest.approx(-0.02)
-    assert r.gap_depth_back[plus] > 0.0 and r.gap_depth_front[plus] == 0.0
-    assert r.gap_depth_front[minus] > 0.0 and r.gap_depth_back[minus] == 0.0
+    assert r.gap_depth_back[plus] > 0.0 and r.n_open_front[plus] == 0
+    assert r.gap_depth_front[minus] > 0.0 and r.n_open_back[minus] == 0
     assert r.gap_depth[minus] == r.gap_depth_front[minus]
     assert r.head_force[plus] > 0.0 > r.head_force[minus]
 

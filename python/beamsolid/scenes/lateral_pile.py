@@ -185,6 +185,12 @@ class LateralResult:
     gap_depth_back: list = field(default_factory=list)  # x < 0 side
     gap_depth_front: list = field(default_factory=list)  # x > 0 side
     max_penetration: list = field(default_factory=list)  # largest -gap of a node in contact, m
+    # Largest -gap of an open node (m): a released node overlapping the pile. The status lags by a
+    # step (C20), so an opening that should close shows here until the next commit.
+    max_open_overlap: list = field(default_factory=list)
+    # Open contacts on each side (a depth of 0 is also the ground surface, so count them too).
+    n_open_back: list = field(default_factory=list)  # x < 0
+    n_open_front: list = field(default_factory=list)  # x > 0
     n_open: list = field(default_factory=list)  # contacts open (status 0)
     n_sliding: list = field(default_factory=list)
     converged: bool = False
@@ -356,27 +362,32 @@ class LateralPileModel:
 
     # --- queries ----------------------------------------------------------------
     def contact_state(self):
-        """(gap depth on the x<0 side, on the x>0 side, open, sliding, max penetration)."""
+        """Gap depth (deepest open node) and open count on the x<0 and x>0 sides, open and
+        sliding counts, the largest penetration of a closed contact and the largest overlap of
+        an open one, as a dict."""
+        state = dict(back=0.0, front=0.0, n_back=0, n_front=0, n_open=0, n_slide=0, penetration=0.0,
+                     open_overlap=0.0)
         if self.iface is None:
-            return 0.0, 0.0, 0, 0, 0.0
+            return state
         m, tol = self.m, 1e-9 * self.p.pile_radius
-        back = front = 0.0
-        n_open = n_slide = 0
-        penetration = 0.0
         for s in self.contact_soil:
             e = self.iface.element_of[s]
             status = m.eleResponse(e, "status")[0]
+            gap = m.eleResponse(e, "gap")[0]
             if status == 0.0:
-                n_open += 1
+                state["n_open"] += 1
+                state["open_overlap"] = max(state["open_overlap"], -gap)
                 depth, x = -m.nodeCoord(s, 3), self._x[s]
                 if x < -tol:
-                    back = max(back, depth)
+                    state["back"] = max(state["back"], depth)
+                    state["n_back"] += 1
                 elif x > tol:
-                    front = max(front, depth)
+                    state["front"] = max(state["front"], depth)
+                    state["n_front"] += 1
             else:
-                n_slide += status == 2.0
-                penetration = max(penetration, -m.eleResponse(e, "gap")[0])
-        return back, front, n_open, n_slide, penetration
+                state["n_slide"] += status == 2.0
+                state["penetration"] = max(state["penetration"], -gap)
+        return state
 
     def bending_moments(self):
         """M_y at the pile nodes: the moment about +y of the forces acting on the pile above the
@@ -401,13 +412,16 @@ class LateralPileModel:
         else:
             r.head_force.append(m.nodeReaction(head, 1))
         r.iterations.append(iterations)
-        back, front, n_open, n_slide, penetration = self.contact_state()
-        r.gap_depth_back.append(back)
-        r.gap_depth_front.append(front)
-        r.gap_depth.append(back if r.head_disp[-1] >= 0.0 else front)
-        r.n_open.append(n_open)
-        r.n_sliding.append(n_slide)
-        r.max_penetration.append(penetration)
+        c = self.contact_state()
+        r.gap_depth_back.append(c["back"])
+        r.gap_depth_front.append(c["front"])
+        r.gap_depth.append(c["back"] if r.head_disp[-1] >= 0.0 else c["front"])
+        r.n_open_back.append(c["n_back"])
+        r.n_open_front.append(c["n_front"])
+        r.n_open.append(c["n_open"])
+        r.n_sliding.append(c["n_slide"])
+        r.max_penetration.append(c["penetration"])
+        r.max_open_overlap.append(c["open_overlap"])
 
     def finish(self, r):
         m = self.m
