@@ -14,7 +14,8 @@ penalty = factor x E_soil R, factor 1e-2 .. 1e6):
                (10 steps, mu = 0.5, Newton; elsewhere G = 1e5, the lateral pile's default)
 
 Each cell records: converged or not, Newton iterations per step, the largest
-interpenetration of a closed contact (relative to d), and the error of the head
+interpenetration of a closed contact and the largest overlap of an open one with
+the pile (both relative to d), and the error of the head
 force at the load peaks against the reference: Lagrange multipliers at the finest
 step of the steps map, Newton, same mu and protocol (the finest converged answer). Every
 cell that fails is run again with adaptive stepping (cut on failure, grow back)
@@ -87,11 +88,12 @@ def _run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive, 
         r, error = None, f"{type(exc).__name__}: {exc}"
     wall = time.perf_counter() - t0
     if r is None:
-        return dict(converged=False, iterations=None, penetration=None, peaks=[], wall=wall, error=error,
-                    steps_cut=0, reached=0.0)
+        return dict(converged=False, iterations=None, penetration=None, overlap=None, peaks=[], wall=wall,
+                    error=error, steps_cut=0, reached=0.0)
     n_steps = max(1, len(r.iterations))
     return dict(converged=bool(r.converged), iterations=sum(r.iterations) / n_steps,
-                penetration=max(r.max_penetration, default=0.0) / p.head_disp if r.max_penetration else 0.0,
+                penetration=max(r.max_penetration, default=0.0) / p.head_disp,
+                overlap=max(r.max_open_overlap, default=0.0) / p.head_disp,
                 peaks=peaks(r), wall=wall, error=None, steps_cut=getattr(r, "steps_cut", 0),
                 reached=len(r.head_disp))
 
@@ -140,9 +142,9 @@ def heatmap(name, protocol, methods, columns, cells, path):
             if cell["converged"] and cell.get("peak_error") is not None:
                 err[i, j] = math.log10(max(cell["peak_error"], 1e-12))
             if cell["converged"] and cell["penetration"] is not None:
-                pen[i, j] = math.log10(max(cell["penetration"], 1e-12))
+                pen[i, j] = math.log10(max(cell["penetration"], cell.get("overlap") or 0.0, 1e-12))
     for ax, data, title in ((axes[0], err, "log10 error of peak head force"),
-                            (axes[1], pen, "log10 penetration / d")):
+                            (axes[1], pen, "log10 overlap with the pile / d\n(closed: penetration; open: status lag)")):
         im = ax.imshow(data, cmap="viridis_r", aspect="auto", vmin=-8, vmax=0)
         ax.set_xticks(range(len(columns)), [str(c) for c in columns], rotation=15, fontsize=8)
         ax.set_yticks(range(len(methods)), [method_label(m) for m in methods])
@@ -207,7 +209,9 @@ def main():
              f"{problem.stiffness_scale:g} kN/m. Error: largest |F - F_ref| / max |F_ref| at the load peaks, "
              f"reference = Lagrange, the finest step (monotonic {REFERENCE_STEPS['monotonic']}, cyclic "
              f"{REFERENCE_STEPS['cyclic']} steps per quarter cycle), Newton, same mu. Cyclic: one full cycle "
-             "0 -> +d -> 0 -> -d -> 0.", ""]
+             "0 -> +d -> 0 -> -d -> 0. pen: largest penetration of a closed contact / d; ovl: largest "
+             "overlap of an open (released) contact with the pile / d, which the one-step status lag leaves "
+             "until the next commit.", ""]
     for protocol in (PROTOCOLS if args.protocol == "both" else [args.protocol]):
         references = {}
         for mu in sorted({0.5, *(MUS if not args.quick else [0.1, 1.0])}):
@@ -237,6 +241,7 @@ def main():
                     print(f"{protocol:9s} {name:9s} {method_label(m):14s} {str(c):16s} "
                           f"{'ok  ' if cell['converged'] else 'FAIL'} "
                           f"it/step {cell['iterations'] or 0:5.2f} pen {cell['penetration'] or 0:.1e} "
+                          f"ovl {cell['overlap'] or 0:.1e} "
                           f"err {cell['peak_error'] if cell['peak_error'] is not None else float('nan'):.1e} "
                           f"{'rescued' if cell.get('rescued') else ''} {cell['wall']:.1f} s", flush=True)
             results["maps"][protocol][name] = {f"{k[0]} | {k[1]}": v for k, v in cells.items()}
@@ -255,7 +260,8 @@ def main():
                     if cell["converged"]:
                         err = cell["peak_error"]
                         row.append(f"{cell['iterations']:.1f} it, pen {cell['penetration']:.0e}, "
-                                   f"err {err:.0e}" if err is not None else f"{cell['iterations']:.1f} it")
+                                   f"ovl {cell['overlap']:.0e}, err {err:.0e}" if err is not None
+                                   else f"{cell['iterations']:.1f} it")
                     else:
                         rescue = cell.get("rescue", {})
                         row.append("**fails**" + (f"; adaptive: ok, {rescue['iterations']:.1f} it, "

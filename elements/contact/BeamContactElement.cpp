@@ -177,13 +177,17 @@ void BeamContactElement::commitState() {
   } catch (const OpenSeesError& e) {
     throw OpenSeesError(context() + ": " + e.what());
   }
-  inContact_ = nextContactStatus(convergedGap);
+  const bool nextStatus = nextContactStatus(convergedGap);
   // Forces and tangent on the new segment's dofs before anything reads them
-  // (an integrator may form the tangent before the step's first update).
+  // (an integrator may form the tangent before the step's first update). They
+  // are evaluated with the step's status, so that a handed-over element, like
+  // every other one, shows the converged state until the next step's first
+  // update, also when its status changes at this commit.
   if (moved > 0) {
     update();
     slidingAcrossHandOver_ = convergedSliding && activeInUpdate_;
   }
+  inContact_ = nextStatus;
 }
 
 void BeamContactElement::revertToLastCommit() { material_->revertToLastCommit(); }

@@ -33,28 +33,20 @@ def test_global_equilibrium(bent):
 
 def test_contact_forces_carry_the_push(bent):
     """Cap force = sum of the x contact forces on the soil nodes (= minus those on the piles,
-    which rest on nothing else), per pile = its head shear, 1e-8 of the cap force -- at every
-    step in which no contact changed its status at the commit. Status is decided at the commit
-    (docs/beam_contact.md): a contact that starts sliding there has its friction returned to the
-    cone (those steps are held to 1e-3; observed 1e-4); a contact released there (lambda < 0 at
-    convergence) and handed over to the next segment in the same commit answers eleResponse
-    with the next step's state, no force, while the converged state had its tension. Such steps
-    are left to test_global_equilibrium (bricks and beams only); at least half of the push steps
-    must be checked here."""
-    checked = 0
+    which rest on nothing else), per pile = its head shear, 1e-8 of the cap force, at every
+    step. Status is decided at the commit (docs/beam_contact.md): a contact that starts sliding
+    there has its friction returned to the cone (those steps are held to 1e-3; observed 1e-4).
+    A contact released or handed over at a commit still answers with the step's converged
+    state (until session 4 one released and handed over in the same commit answered with the
+    next step's, and those steps were skipped here); the hand-overs do happen in this run."""
     for k in range(1, len(bent.cap_disp)):
         P = bent.cap_force[k]
-        changes = [(a, b, h1 > h0) for s0, s1, m0, m1 in zip(bent.status[k - 1], bent.status[k],
-                                                              bent.handovers[k - 1], bent.handovers[k])
-                   for a, b, h0, h1 in zip(s0, s1, m0, m1)]
-        if any(a in (1, 2) and b == 0 and moved for a, b, moved in changes):
-            continue
-        tol = 1e-3 if any(a == 1 and b == 2 for a, b, _ in changes) else 1e-8
+        changes = [(a, b) for s0, s1 in zip(bent.status[k - 1], bent.status[k]) for a, b in zip(s0, s1)]
+        tol = 1e-3 if any(a == 1 and b == 2 for a, b in changes) else 1e-8
         assert sum(bent.contact_x[k]) == pytest.approx(P, rel=tol)
         for p in range(bent.setup.n_piles):
             assert bent.contact_x[k][p] == pytest.approx(bent.head_shear[k][p], abs=tol * P)
-        checked += 1
-    assert checked >= (len(bent.cap_disp) - 1) / 2
+    assert sum(sum(h) for h in bent.handovers[-1]) > 0
 
 
 def test_symmetric_about_the_row(bent):
