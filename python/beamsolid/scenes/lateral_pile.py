@@ -134,9 +134,9 @@ class Numerics:
     # Stick stiffness of ContactMaterial3D (kN per m of elastic slip, per contact node). Stiff
     # relative to the soil (E_soil h ~ 1e4 kN/m per surface node) so that a sticking node does
     # not slip: the interface is then rigid-plastic Coulomb friction, whose answer no longer
-    # depends on G (head force at 20 mm, coarse: 838.3 kN for G = 1e5, 838.9 for 1e6; the
-    # paper's G = 1e3 gives 766.8, 9 % soft). Any G converges (ContactMaterial3D::setIterate);
-    # stiff G takes 5-7 Newton iterations a step, G = 1e3 2-4.
+    # depends on G (head force at 20 mm, coarse, 10 steps: 896.7 kN for G = 1e5, 897.5 for 1e6;
+    # the paper's G = 1e3 gives 819.6, 9 % soft). Any G converges (ContactMaterial3D::setIterate);
+    # stiff G takes 5-7 Newton iterations a step, G = 1e3 3-4.
     contact_G: float = 1e5
     algorithm: str = "Newton"  # "Newton" | "NewtonLineSearch" | "KrylovNewton"
     steps: int = 20  # steps to reach head_disp (monotonic), or per quarter cycle (cyclic)
