@@ -17,25 +17,17 @@ The module is skipped when the oracle interpreter or openseespy is missing.
 import json
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
 
-ORACLE = os.environ.get("BEAMSOLID_ORACLE_PYTHON", "/work/oracle-venv/bin/python")
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "oracle_scripts"))
+import compare  # noqa: E402
 
-
-def _oracle_available():
-    if not os.path.exists(ORACLE):
-        return False
-    try:
-        r = subprocess.run([ORACLE, "-c", "import openseespy.opensees"], capture_output=True, timeout=120)
-    except (OSError, subprocess.SubprocessError):
-        return False
-    return r.returncode == 0
-
-
-if not _oracle_available():
-    pytest.skip(f"OpenSeesPy oracle interpreter not available at {ORACLE}", allow_module_level=True)
+ORACLE = compare.find_oracle_python()
+if ORACLE is None:
+    pytest.skip("no Python with openseespy (set BEAMSOLID_ORACLE_PYTHON)", allow_module_level=True)
 
 import beamsolid  # noqa: E402
 
