@@ -54,24 +54,8 @@ ElasticBeam3d::Vector6 ElasticBeam3d::basicForce() const {
 }
 
 ElasticBeam3d::Vector12 ElasticBeam3d::localForce() const {
-  // The basic system's equilibrium (CrdTransf.h), without any geometric term.
-  const Vector6 q = basicForce();
-  const double shearY = (q[1] + q[2]) / length_;
-  const double shearZ = (q[3] + q[4]) / length_;
-  Vector12 p = p0_;
-  p[0] -= q[0];
-  p[6] += q[0];
-  p[1] += shearY;
-  p[7] -= shearY;
-  p[2] -= shearZ;
-  p[8] += shearZ;
-  p[3] -= q[5];
-  p[9] += q[5];
-  p[4] += q[3];
-  p[10] += q[4];
-  p[5] += q[1];
-  p[11] += q[2];
-  return p;
+  // The basic system's equilibrium, without any geometric term.
+  return CrdTransf::basicToLocal(basicForce(), p0_, length_);
 }
 
 MatrixView ElasticBeam3d::tangentStiff() {

@@ -68,6 +68,28 @@ class CrdTransf {
 
   virtual void print(std::ostream& os) const { os << "geomTransf " << tag_ << " type " << className() << '\n'; }
 
+  // Local end forces A^T q + p0 of the basic system on a chord of `length`:
+  // the equilibrium every transformation starts from (geometric terms, such
+  // as PDelta's chord shear, are added by the caller).
+  static Vector12 basicToLocal(const Vector6& q, const Vector12& p0, double length) {
+    Vector12 p = p0;
+    const double shearY = (q[1] + q[2]) / length;
+    const double shearZ = (q[3] + q[4]) / length;
+    p[0] -= q[0];
+    p[6] += q[0];
+    p[1] += shearY;
+    p[7] -= shearY;
+    p[2] -= shearZ;
+    p[8] += shearZ;
+    p[3] -= q[5];
+    p[9] += q[5];
+    p[4] += q[3];
+    p[10] += q[4];
+    p[5] += q[1];
+    p[11] += q[2];
+    return p;
+  }
+
  private:
   int tag_;
 };

@@ -136,22 +136,7 @@ void LinearCrdTransf::revertToStart() {
 }
 
 LinearCrdTransf::Vector12 LinearCrdTransf::basicToLocal(const Vector6& q, const Vector12& p0) const {
-  Vector12 p = p0;
-  const double shearY = (q[1] + q[2]) / length_;
-  const double shearZ = (q[3] + q[4]) / length_;
-  p[0] -= q[0];
-  p[6] += q[0];
-  p[1] += shearY;
-  p[7] -= shearY;
-  p[2] -= shearZ;
-  p[8] += shearZ;
-  p[3] -= q[5];
-  p[9] += q[5];
-  p[4] += q[3];
-  p[10] += q[4];
-  p[5] += q[1];
-  p[11] += q[2];
-  return p;
+  return CrdTransf::basicToLocal(q, p0, length_);
 }
 
 LinearCrdTransf::Vector12 LinearCrdTransf::localResistingForce(const Vector6& q, const Vector12& p0) const {
