@@ -115,3 +115,62 @@ def test_refining_the_ring_removes_the_facet_error_not_the_unloading():
     assert abs(1 - ratio[16]) < abs(1 - ratio[8])
     # Facet error: 9.97% at n = 8, 2.55% at n = 16; the unloading moves by far less.
     assert abs(results[16].unloading - results[8].unloading) < 0.01
+
+
+@pytest.mark.parametrize("level", ["coarse", "medium"])
+def test_default_pull_reaches_full_sliding_on_every_level(level):
+    """A node slides once its slip reaches mu N / G. The coarse ring's deepest nodes carry 3.7 times
+    the paper ring's normal force, so the paper's pull (0.04 mu + 0.004) left mu = 0.5 and 1 short of
+    full sliding there (gate (c) off by 5.5 % and 10 %): Q was not the frictional resistance."""
+    from beamsolid.scenes.donut_cli import LEVELS
+
+    n_theta, n_radial, n_z = LEVELS[level]
+    for mu in (0.5, 1.0):
+        s = DonutPullout(mu=mu, n_theta=n_theta, n_radial=n_radial, n_z=n_z)
+        if level == "medium":  # the paper's ring keeps the paper's pull (Table 1 unchanged)
+            assert s.head_pull == pytest.approx(0.04 * mu + 0.004, rel=1e-15)
+        r = run(s)
+        assert r.failed_step == 0
+        assert r.full_sliding is not None
+        assert r.q_contact == pytest.approx(s.facet_factor * r.unloading * s.beta_method, rel=1e-8)
+
+
+def test_scene_records_the_pull_and_its_files_agree(tmp_path):
+    """python -m beamsolid.scenes donut_pullout: the head recorders, the PVD series (read with
+    meshio) and the returned curves hold the same numbers; every mu reaches gate (c)."""
+    import xml.etree.ElementTree as ET
+
+    import meshio
+    import numpy as np
+
+    from beamsolid.scenes.__main__ import main
+    from beamsolid.scenes.donut_cli import RECORDED_MU, scene
+
+    assert main(["donut_pullout", "--level", "coarse", "--out", str(tmp_path / "cli")]) == 0
+    results, files = scene(level="coarse", out=str(tmp_path))
+    assert all(f.exists() for f in files)
+    for r in results:
+        s = r.setup
+        assert r.q_contact == pytest.approx(s.facet_factor * r.unloading * s.beta_method, rel=1e-8)
+    r = next(r for r in results if r.setup.mu == RECORDED_MU)
+    disp = np.loadtxt(tmp_path / "head_disp.out", ndmin=2)
+    force = np.loadtxt(tmp_path / "head_reaction.out", ndmin=2)
+    # One row per pull step (the released state before the pull is row 0 of the curves), written
+    # with OpenSees' default 6 significant digits.
+    assert len(disp) == len(r.head_disp) - 1
+    assert disp[:, 1] == pytest.approx(r.head_disp[1:], rel=1e-5)
+    assert force[:, 1] == pytest.approx(r.head_force[1:], rel=1e-5)
+    assert r.head_disp[-1] == pytest.approx(r.setup.head_pull, rel=1e-12)
+    listed = [d.get("file") for d in ET.parse(tmp_path / "donut_pullout.pvd").getroot().iter("DataSet")]
+    grid = meshio.read(tmp_path / listed[-1])
+    tags = grid.point_data["nodeTag"].ravel().astype(int).tolist()
+    head = tags.index(_head_tag(r.setup))
+    assert grid.point_data["displacement"][head][2] == pytest.approx(r.head_disp[-1], rel=1e-9)
+
+
+def _head_tag(setup):
+    model = DonutModel(setup).build()
+    try:
+        return model.pile_nodes[0]
+    finally:
+        model.m.wipe()

@@ -48,7 +48,8 @@ def scene(level="coarse", out="donut_pullout_output", adaptive=False, steps=None
     n_theta, n_radial, n_z = LEVELS[level]
     base = DonutPullout(n_theta=n_theta, n_radial=n_radial, n_z=n_z, **({} if steps is None else {"steps": steps}))
     print(f"donut_pullout ({level}: donut {n_theta} x {n_radial} x {n_z}, G = {base.G:g}); units kN, m")
-    print(f"{'mu':>6s}{'Q_contact':>11s}{'Qs beta':>9s}{'%diff':>7s}{'paper Q':>9s}{'paper Qs':>9s}{'iters':>7s}")
+    print(f"{'mu':>6s}{'Q_contact':>11s}{'Qs beta':>9s}{'%diff':>7s}{'facet':>8s}{'unload':>8s}{'gate c':>9s}"
+          f"{'paper Q':>9s}{'paper Qs':>9s}{'iters':>7s}")
     results = []
     for mu, G, q_paper, qs_paper in PAPER_TABLE1:
         s = replace(base, mu=mu, G=G)
@@ -56,8 +57,12 @@ def scene(level="coarse", out="donut_pullout_output", adaptive=False, steps=None
         if mu != RECORDED_MU and r.failed_step and adaptive:
             r = recorded_pull(s, out / f"mu_{mu:g}", adaptive)  # retry with adaptive steps
         results.append(r)
+        gate = r.q_contact / (s.facet_factor * r.unloading * s.beta_method) - 1
         print(f"{mu:6.2f}{r.q_contact:11.2f}{s.beta_method:9.2f}{100 * (r.q_contact / s.beta_method - 1):7.1f}"
+              f"{s.facet_factor:8.4f}{r.unloading:8.4f}{gate:9.1e}"
               f"{q_paper:9.0f}{qs_paper:9.0f}{sum(r.iterations):7d}{'' if not r.failed_step else '  FAILED'}")
+    print("  %diff against beta = facet x unload - 1: facet = n sin(2 pi/n)/(2 pi), the inscribed n-gon's share of\n"
+          "  the circle's normal force; unload = sum N at full sliding / geostatic sum N; gate c = Q / (facet unload Qs) - 1")
     files = [out / "head_disp.out", out / "head_reaction.out", out / "donut_pullout.pvd"]
     try:
         import matplotlib

@@ -66,7 +66,7 @@ class DonutPullout:
     n_radial: int = 4
     n_z: int = 10
     radial_ratio: float = 1.5
-    pull: float = None  # final head displacement (up); None: 0.04 mu + 0.004, past full sliding
+    pull: float = None  # final head displacement (up); None: past full sliding (head_pull)
     twist: float = 0.0  # final head rotation about the pile axis (rad)
     steps: int = 12
     contact: str = "BeamContact3D"  # or "BeamContact3Dp"
@@ -82,7 +82,17 @@ class DonutPullout:
 
     @property
     def head_pull(self):
-        return 0.04 * self.mu + 0.004 if self.pull is None else self.pull
+        """The pull, by default 0.04 mu + 0.004 on the paper's ring (past full sliding there). A node
+        slides once its slip reaches mu N / G, so a ring whose deepest node carries more normal
+        force per unit G (fewer facets, thicker layers) is pulled proportionally further."""
+        if self.pull is not None:
+            return self.pull
+        return (0.04 * self.mu + 0.004) * max(1.0, self.deepest_slip_scale / PAPER_SLIP_SCALE)
+
+    @property
+    def deepest_slip_scale(self):
+        """N / G of the deepest ring's contacts at geostatic rest (m): sigma_h(D) R sin(2 pi/n) h / G."""
+        return self.sigma_h(self.depth) * self.pile_radius * math.sin(2.0 * math.pi / self.n_theta) * self.layer / self.G
 
     @property
     def layer(self):
@@ -157,6 +167,10 @@ class PulloutResult:
     def unloading(self):
         """sum N at the end (full sliding) / geostatic sum N."""
         return self.normal_sum[-1] / self.geostatic_normal_sum
+
+
+# The paper's ring (the defaults), for which the default pull was chosen.
+PAPER_SLIP_SCALE = DonutPullout().deepest_slip_scale
 
 
 def _static(m, s, dt):
