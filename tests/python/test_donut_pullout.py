@@ -132,7 +132,7 @@ def test_default_pull_reaches_full_sliding_on_every_level(level):
         r = run(s)
         assert r.failed_step == 0
         assert r.full_sliding is not None
-        assert r.q_contact == pytest.approx(s.facet_factor * r.unloading * s.beta_method, rel=1e-8)
+        assert r.q_contact == pytest.approx(r.sliding_resistance, rel=1e-8)
 
 
 def test_scene_records_the_pull_and_its_files_agree(tmp_path):
@@ -150,8 +150,7 @@ def test_scene_records_the_pull_and_its_files_agree(tmp_path):
     results, files = scene(level="coarse", out=str(tmp_path))
     assert all(f.exists() for f in files)
     for r in results:
-        s = r.setup
-        assert r.q_contact == pytest.approx(s.facet_factor * r.unloading * s.beta_method, rel=1e-8)
+        assert r.q_contact == pytest.approx(r.sliding_resistance, rel=1e-8)
     r = next(r for r in results if r.setup.mu == RECORDED_MU)
     disp = np.loadtxt(tmp_path / "head_disp.out", ndmin=2)
     force = np.loadtxt(tmp_path / "head_reaction.out", ndmin=2)

@@ -57,7 +57,7 @@ def scene(level="coarse", out="donut_pullout_output", adaptive=False, steps=None
         if mu != RECORDED_MU and r.failed_step and adaptive:
             r = recorded_pull(s, out / f"mu_{mu:g}", adaptive)  # retry with adaptive steps
         results.append(r)
-        gate = r.q_contact / (s.facet_factor * r.unloading * s.beta_method) - 1
+        gate = r.q_contact / r.sliding_resistance - 1
         print(f"{mu:6.2f}{r.q_contact:11.2f}{s.beta_method:9.2f}{100 * (r.q_contact / s.beta_method - 1):7.1f}"
               f"{s.facet_factor:8.4f}{r.unloading:8.4f}{gate:9.1e}"
               f"{q_paper:9.0f}{qs_paper:9.0f}{sum(r.iterations):7d}{'' if not r.failed_step else '  FAILED'}")

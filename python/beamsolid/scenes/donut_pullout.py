@@ -168,6 +168,11 @@ class PulloutResult:
         """sum N at the end (full sliding) / geostatic sum N."""
         return self.normal_sum[-1] / self.geostatic_normal_sum
 
+    @property
+    def sliding_resistance(self):
+        """What Q must be once every contact slides, gate (c): Qs x facet factor x unloading."""
+        return self.setup.beta_method * self.setup.facet_factor * self.unloading
+
 
 # The paper's ring (the defaults), for which the default pull was chosen.
 PAPER_SLIP_SCALE = DonutPullout().deepest_slip_scale
