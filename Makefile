@@ -6,7 +6,6 @@ VENV := .venv
 PY := $(VENV)/bin/python
 BUILD := build
 JOBS ?= 2
-export OPENBLAS_CORETYPE ?= SKYLAKEX
 
 .PHONY: all deps venv build test test-cpp test-python demo clean
 

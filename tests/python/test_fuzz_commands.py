@@ -6,10 +6,11 @@ against a small live model. Each call must either succeed or raise
 OpenSeesError. The fuzzing runs in a subprocess so that a crash shows up as a
 failed test instead of killing pytest.
 """
-import os
 import subprocess
 import sys
 import textwrap
+
+from conftest import subprocess_env
 
 FUZZ = textwrap.dedent(
     r'''
@@ -91,9 +92,7 @@ FUZZ = textwrap.dedent(
 def test_random_commands_never_crash(tmp_path):
     script = tmp_path / "fuzz.py"
     script.write_text(FUZZ)
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(os.path.join(os.path.dirname(__file__), "..", "..", "python")),
-                                                       env.get("PYTHONPATH", "")]))
+    env = subprocess_env()
     for seed in (1, 2, 3):
         proc = subprocess.run([sys.executable, str(script), str(seed), "3000"], cwd=tmp_path, env=env,
                               capture_output=True, text=True, timeout=300)

@@ -20,13 +20,12 @@
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
-from pathlib import Path
 
 import pytest
 
+from conftest import subprocess_env
 from beamsolid.scenes.lateral_pile import LEVELS, LateralPile, LateralPileModel, Numerics, run
 
-PYTHON = Path(__file__).resolve().parents[2] / "python"
 
 
 @pytest.fixture(scope="module")
@@ -150,7 +149,7 @@ def test_numerics_reject_bad_choices():
 
 def test_cli_writes_recorders_pvd_and_plots(tmp_path):
     out = tmp_path / "lp"
-    env = {"PYTHONPATH": str(PYTHON), "MPLBACKEND": "Agg", "OPENBLAS_CORETYPE": "SKYLAKEX"}
+    env = subprocess_env(MPLBACKEND="Agg")
     done = subprocess.run([sys.executable, "-m", "beamsolid.scenes", "lateral_pile", "--level", "coarse", "--out",
                            str(out), "--steps", "4"], capture_output=True, text=True, env=env, timeout=300)
     assert done.returncode == 0, done.stderr
@@ -210,7 +209,8 @@ def test_beam_contact_agrees_with_node_to_node_contact_on_rigid_arms():
     settlement zeroed, BeamContact3Dp gives the same head displacement and peak moment to 1e-3
     at H = 70 kN (one step; measured 8e-5 and 7e-5). Before, the soil had slid 0.15 m down the
     pile and the beam-contact model was 8 % softer."""
-    from beamsolid.scenes.lateral_pile import FIRST_CONTACT, LateralResult
+    from conftest import subprocess_env
+from beamsolid.scenes.lateral_pile import FIRST_CONTACT, LateralResult
     p = LateralPile()
     num = Numerics(interface="penalty", control="force", head_load=70.0, steps=1)
     results = {}

@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 
 import beamsolid
+from conftest import subprocess_env
 
-PYTHON_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "python"))
 PATH_VALUES = [0.0, 1.0, -0.5, 0.8, -1.2, 0.3]  # a Path series that changes sign
 NODES, DOFS = [2, 3, 4], [1, 2, 6]
 BEAMS = [1, 2, 3]
@@ -312,7 +312,7 @@ SCRIPT = textwrap.dedent("""
 def test_script_exiting_without_wipe_keeps_every_row(tmp_path, ending):
     script = tmp_path / "script.py"
     script.write_text(SCRIPT)
-    env = dict(os.environ, PYTHONPATH=PYTHON_DIR + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env = subprocess_env()
     base = str(tmp_path / "rec")
     proc = subprocess.run([sys.executable, str(script), base, ending], env=env, capture_output=True, text=True,
                           timeout=60)
