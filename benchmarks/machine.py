@@ -1,36 +1,14 @@
 """What the benchmarks ran on: CPU, and the BLAS kernels under the sparse solvers.
 
-Every benchmark writes this into its results: OpenBLAS picks its kernel at run time
-(OPENBLAS_CORETYPE overrides a misdetection), and factorization speed depends on it.
+Every benchmark writes this into its results: the kernel OpenBLAS runs (chosen at
+beamsolid's import, beamsolid.blas_info() says which and why) sets the factorization speed.
 """
-import ctypes
 import os
 import pathlib
 import platform
 import subprocess
 
 import beamsolid
-
-
-def openblas_in_use():
-    """Version, build configuration and kernel of the OpenBLAS that SuiteSparse loaded in this process."""
-    libs = set()
-    with open("/proc/self/maps") as maps:
-        for line in maps:
-            path = line.split()[-1]
-            if "openblas" in path and "scipy_openblas" not in path and path.endswith(tuple(".so" + s for s in
-                                                                                           ("", ".0", ".3"))):
-                libs.add(path)
-    for path in sorted(libs):
-        try:
-            lib = ctypes.CDLL(path)
-            lib.openblas_get_config.restype = ctypes.c_char_p
-            lib.openblas_get_corename.restype = ctypes.c_char_p
-            return path, lib.openblas_get_config().decode(), lib.openblas_get_corename().decode(), \
-                lib.openblas_get_num_threads()
-        except (OSError, AttributeError):
-            continue
-    return None
 
 
 def ldd_blas(library_name):
@@ -58,21 +36,25 @@ def cpu_model():
 
 
 def blas_report():
-    """Markdown lines: CPU, the BLAS/LAPACK that UMFPACK and CHOLMOD link, the kernel loaded now."""
+    """Markdown lines: CPU, the BLAS/LAPACK that UMFPACK and CHOLMOD link, the kernel loaded now and why.
+    Printed too, so that a benchmark's console output says which kernels ran."""
     lines = ["## Machine and BLAS", "", f"- CPU: {cpu_model()}, {os.cpu_count()} logical cores; Python "
              f"{platform.python_version()} on {platform.platform()}."]
     for name in ("libumfpack", "libcholmod"):
         path, deps = ldd_blas(name)
         lines.append(f"- `ldd {path}`:")
         lines += [f"  - `{d}`" for d in deps]
-    blas = openblas_in_use()
-    if blas:
-        path, config, core, threads = blas
-        lines += [f"- Loaded at run time: `{path}`: `{config}`, kernel **{core}**, {threads} threads "
-                  f"(OPENBLAS_CORETYPE={os.environ.get('OPENBLAS_CORETYPE', 'unset')}, "
-                  f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS', 'unset')})."]
+    info = beamsolid.blas_info()
+    if info.kernel:
+        lines += [f"- Loaded at run time: `{info.library}`: `{info.config}`, kernel **{info.kernel}**, "
+                  f"{info.threads} threads (OPENBLAS_CORETYPE={info.coretype or 'unset'}, "
+                  f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS', 'unset')}).",
+                  f"- Why this kernel: {info.reason}."]
+        if info.warning:
+            lines.append(f"- Warning: {info.warning}.")
     else:
-        lines.append("- No OpenBLAS loaded in this process (reference BLAS or not yet loaded).")
+        lines.append(f"- No OpenBLAS loaded in this process: {info.reason}.")
     lines += ["- NumPy's own OpenBLAS (`numpy.show_config()`) is a different library and does not run in "
               "these solves.", ""]
+    print("\n".join(lines))
     return lines

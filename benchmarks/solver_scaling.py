@@ -5,7 +5,7 @@ top, times one linear static step (Newton, two iterations: the second
 finds a zero correction) per system, and reports equations, time per
 iteration and the ratio. Writes benchmarks/results/solver_scaling.md and a
 PNG chart. Timings depend on the machine and its load; the BLAS that
-SuiteSparse used is recorded (ldd), as is OPENBLAS_CORETYPE.
+SuiteSparse used is recorded (ldd), as is the kernel OpenBLAS ran and why (beamsolid.blas_info()).
 """
 import pathlib
 import sys
@@ -66,7 +66,7 @@ def main(sizes=(6, 10, 14, 18)):
                   f"step {solve:6.3f}s ({iters} iterations, {solve / iters * 1e3:7.1f} ms/iteration)", flush=True)
     OUT.mkdir(exist_ok=True)
     lines = ["# Solver scaling on brick blocks", "",
-             "Command: `make build && PYTHONPATH=python OPENBLAS_CORETYPE=SKYLAKEX .venv/bin/python benchmarks/solver_scaling.py`",
+             "Command: `make build && PYTHONPATH=python .venv/bin/python benchmarks/solver_scaling.py`",
              "", "| n | system | equations | model build (s) | step (s) | iterations | time per iteration (ms) |",
              "|---|---|---|---|---|---|---|"]
     for n, system, eqs, build, solve, iters, per in rows:

@@ -4,6 +4,7 @@
 
 #include "bindings/Interpreter.h"
 #include "bindings/PythonElement.h"
+#include "core/BlasKernel.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
 
@@ -94,5 +95,22 @@ PYBIND11_MODULE(_beamsolid, m) {
     if (kind == "section") return r.sections.types();
     if (kind == "beamIntegration") return r.beamIntegrations.types();
     throw OpenSeesError("registered_types: unknown kind '" + kind + "'");
+  });
+
+  // What beamsolid.blas_info() reports: the OpenBLAS loaded and the CPU's flags.
+  m.def("_blas_state", []() {
+    using beamsolid::BlasKernel;
+    py::dict d;
+    const auto cpu = BlasKernel::thisCpu();
+    d["cpu_vendor"] = cpu.vendor;
+    d["cpu_flags"] = std::vector<std::string>(cpu.flags.begin(), cpu.flags.end());
+    if (const auto l = BlasKernel::loaded()) {
+      d["library"] = l->library;
+      d["config"] = l->config;
+      d["kernel"] = l->core;
+      d["threads"] = l->threads;
+      d["kernel_requires"] = BlasKernel::requiredFlags(l->core).value_or(std::vector<std::string>{});
+    }
+    return d;
   });
 }
