@@ -27,7 +27,6 @@ from conftest import subprocess_env
 from beamsolid.scenes.lateral_pile import LEVELS, LateralPile, LateralPileModel, Numerics, run
 
 
-
 @pytest.fixture(scope="module")
 def monotonic():
     return run(numerics=Numerics(steps=5))
@@ -209,8 +208,7 @@ def test_beam_contact_agrees_with_node_to_node_contact_on_rigid_arms():
     settlement zeroed, BeamContact3Dp gives the same head displacement and peak moment to 1e-3
     at H = 70 kN (one step; measured 8e-5 and 7e-5). Before, the soil had slid 0.15 m down the
     pile and the beam-contact model was 8 % softer."""
-    from conftest import subprocess_env
-from beamsolid.scenes.lateral_pile import FIRST_CONTACT, LateralResult
+    from beamsolid.scenes.lateral_pile import FIRST_CONTACT, LateralResult
     p = LateralPile()
     num = Numerics(interface="penalty", control="force", head_load=70.0, steps=1)
     results = {}
