@@ -110,6 +110,9 @@ class Domain {
   bool removeRecorder(int tag);
   void removeRecorders();
   const std::map<int, std::unique_ptr<Recorder>>& recorders() const { return recorders_; }
+  // The tag addRecorder gives next: a recorder being built names itself by
+  // it when it claims its file (OutputFileClaim).
+  int nextRecorderTag() const { return nextRecorderTag_; }
   void record();
   void flushRecorders();
 

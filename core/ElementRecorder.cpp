@@ -103,8 +103,9 @@ ElementRecorder::ElementRecorder(const Domain& domain, Spec spec, bool envelope)
     if (spec_.output.deltaT > 0.0)
       rows << ", only when the time has advanced by at least dT = " << spec_.output.deltaT;
   }
+  const char* type = envelope ? "EnvelopeElement" : "Element";
   output_ = std::make_unique<RecorderOutput>(spec_.output, std::move(columns), std::move(blocks), rows.str(),
-                                             spec_.context);
+                                             spec_.context, OutputFileClaim::Holder::beingAddedTo(domain, type));
   values_.reserve(width);
 }
 

@@ -172,8 +172,9 @@ NodeRecorder::NodeRecorder(const Domain& domain, Spec spec, bool envelope) : spe
     columns = ResponseEnvelope::columns(columns, echoTime);
     rows = "three rows: min, max and max |value| of each column over all records";
   }
+  const char* type = envelope ? "EnvelopeNode" : "Node";
   output_ = std::make_unique<RecorderOutput>(spec_.output, std::move(columns), std::move(blocks), rows,
-                                             spec_.context);
+                                             spec_.context, OutputFileClaim::Holder::beingAddedTo(domain, type));
   values_.reserve(spec_.nodeTags.size() * spec_.dofs.size());
 }
 

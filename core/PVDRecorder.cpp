@@ -168,6 +168,12 @@ std::size_t vertexOf(const Element& e) {
   return v >= 0 ? static_cast<std::size_t>(v) : 2u;
 }
 
+// A Spec built in C++ may leave the context out.
+PVDRecorder::Spec withContext(PVDRecorder::Spec s) {
+  if (s.context.empty()) s.context = "recorder PVD";
+  return s;
+}
+
 }  // namespace
 
 bool PVDRecorder::cellKindOf(const std::string& className, CellKind& kind) {
@@ -255,8 +261,9 @@ PVDRecorder::Spec PVDRecorder::Spec::parse(CommandArgs& args, const std::string&
   return s;
 }
 
-PVDRecorder::PVDRecorder(const Domain& domain, Spec spec) : spec_(std::move(spec)) {
-  if (spec_.context.empty()) spec_.context = "recorder PVD";
+PVDRecorder::PVDRecorder(const Domain& domain, Spec spec)
+    : spec_(withContext(std::move(spec))),
+      claim_(spec_.collectionPath, OutputFileClaim::Holder::beingAddedTo(domain, "PVD"), spec_.context) {
   std::error_code ec;
   fs::create_directories(spec_.directory, ec);
   if (ec || !fs::is_directory(spec_.directory))
@@ -592,10 +599,13 @@ void PVDRecorder::flush() {
 void PVDRecorder::close() {
   if (closed_) return;
   closed_ = true;
-  if (!collection_.is_open()) return;
-  collection_.flush();
-  const bool ok = static_cast<bool>(collection_);
-  collection_.close();
+  bool ok = true;
+  if (collection_.is_open()) {
+    collection_.flush();
+    ok = static_cast<bool>(collection_);
+    collection_.close();
+  }
+  claim_.release();  // closed, this recorder writes no more
   if (!ok) throw OpenSeesError(spec_.context + ": writing file '" + spec_.collectionPath + "' failed");
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/OutputFileClaim.h"
 #include "core/Recorder.h"
 #include "core/Response.h"
 #include "core/Types.h"
@@ -46,8 +47,9 @@ class PVDRecorder : public Recorder {
     static Spec parse(CommandArgs& args, const std::string& recorderType);
   };
 
-  // Creates the directory and an empty collection; `domain` gives the
-  // starting displacements for incrDisp.
+  // Claims name.pvd (refused while another recorder writes it), creates the
+  // directory and an empty collection; `domain` gives the starting
+  // displacements for incrDisp.
   PVDRecorder(const Domain& domain, Spec spec);
   ~PVDRecorder() override;
 
@@ -86,6 +88,7 @@ class PVDRecorder : public Recorder {
   void rememberDisplacements(const Domain& domain);
 
   Spec spec_;
+  OutputFileClaim claim_;  // before collection_: claimed before it is opened
   std::ofstream collection_;
   std::streampos trailerAt_ = 0;  // where the next DataSet line goes
   bool closed_ = false;

@@ -26,6 +26,11 @@ std::string xmlEscape(const std::string& s) {
   return out;
 }
 
+const std::string& givenPath(const std::string& path, const std::string& context) {
+  if (path.empty()) throw OpenSeesError(context + ": no output file given");
+  return path;
+}
+
 }  // namespace
 
 bool RecorderOutput::Options::parse(CommandArgs& args) {
@@ -103,13 +108,13 @@ std::string RecorderOutput::jsonString(const std::string& s) {
 }
 
 RecorderOutput::RecorderOutput(Options options, std::vector<Column> columns, std::vector<XmlBlock> xmlBlocks,
-                               std::string rowsDescription, std::string context)
+                               std::string rowsDescription, std::string context, OutputFileClaim::Holder holder)
     : options_(std::move(options)),
       columns_(std::move(columns)),
       xmlBlocks_(std::move(xmlBlocks)),
       rowsDescription_(std::move(rowsDescription)),
-      context_(std::move(context)) {
-  if (options_.path.empty()) throw OpenSeesError(context_ + ": no output file given");
+      context_(std::move(context)),
+      claim_(givenPath(options_.path, context_), std::move(holder), context_) {
   open(!options_.append);
   std::error_code ec;
   baseSize_ = options_.append ? std::filesystem::file_size(options_.path, ec) : 0;
@@ -233,6 +238,18 @@ void RecorderOutput::flush() {
 void RecorderOutput::close() {
   if (closed_) return;
   closed_ = true;
+  // Closed, this recorder writes no more, so the file is free even when
+  // closing it failed.
+  try {
+    finish();
+  } catch (...) {
+    claim_.release();
+    throw;
+  }
+  claim_.release();
+}
+
+void RecorderOutput::finish() {
   if (options_.format == Format::XML) {
     if (!file_.is_open()) open(false);
     file_ << "        </Data>\n</OpenSees>\n";

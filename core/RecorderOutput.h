@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/OutputFileClaim.h"
+
 namespace beamsolid {
 
 class CommandArgs;
@@ -68,10 +70,11 @@ class RecorderOutput {
   };
   static XmlBlock timeBlock() { return XmlBlock{"TimeOutput", {}, {"time"}}; }
 
-  // Opens (creates or truncates; appends with -fileAdd) the file, writes the
-  // XML header or the sidecar. Errors are OpenSeesErrors prefixed by context.
+  // Claims the file for `holder` (refused while another recorder writes it),
+  // opens it (creates or truncates; appends with -fileAdd), writes the XML
+  // header or the sidecar. Errors are OpenSeesErrors prefixed by context.
   RecorderOutput(Options options, std::vector<Column> columns, std::vector<XmlBlock> xmlBlocks,
-                 std::string rowsDescription, std::string context);
+                 std::string rowsDescription, std::string context, OutputFileClaim::Holder holder);
   ~RecorderOutput();
   RecorderOutput(const RecorderOutput&) = delete;
   RecorderOutput& operator=(const RecorderOutput&) = delete;
@@ -90,7 +93,8 @@ class RecorderOutput {
   void rewriteRows(const std::vector<std::vector<double>>& rows);
   // Buffered rows go to the operating system: readers see them.
   void flush();
-  // Flushes, closes the XML document and the file. Later calls do nothing.
+  // Flushes, closes the XML document and the file, and lets other recorders
+  // have it. Later calls do nothing.
   void close();
 
   static const char* formatName(Format f);
@@ -103,12 +107,15 @@ class RecorderOutput {
   void writeValues(const std::vector<double>& row);
   void writeSidecar() const;
   void check(const char* action);
+  // close() without the bookkeeping: the XML trailer, flushing, closing the file.
+  void finish();
 
   Options options_;
   std::vector<Column> columns_;
   std::vector<XmlBlock> xmlBlocks_;
   std::string rowsDescription_;
   std::string context_;
+  OutputFileClaim claim_;  // before file_: the file is claimed before it is opened
   std::ofstream file_;
   std::uintmax_t baseSize_ = 0;  // size of an appended-to file before our output
   bool closed_ = false;

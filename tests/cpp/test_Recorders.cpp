@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -11,12 +12,14 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
+#include "core/OutputFileClaim.h"
 #include "core/Recorder.h"
 #include "core/Registry.h"
 #include "elements/Element.h"
@@ -892,4 +895,154 @@ TEST_F(RecorderTest, EnvelopeRewriteKeepsAppendedToContent) {
   EXPECT_EQ(rows[0], (std::vector<double>{9.0, 9.0}));
   EXPECT_TRUE(closeAtPrecision(rows[1][0], std::min(dispOf(1, 1, 0), dispOf(2, 1, 0))));
   EXPECT_TRUE(closeAtPrecision(rows[2][0], std::max(dispOf(1, 1, 0), dispOf(2, 1, 0))));
+}
+
+// ===========================================================================
+// One writer per file: a second recorder on a claimed file is refused before
+// it opens (and so truncates) the file.
+
+TEST_F(RecorderTest, SecondRecorderOnAFileIsRefusedAndTheFirstKeepsItsRows) {
+  add("Node", {s("-file"), s(file("other.out")), s("-node"), 3LL, s("disp")});  // tag 0
+  const std::string f = file("disp.out");
+  add("Node", {s("-file"), s(f), s("-time"), s("-node"), 2LL, s("-dof"), 1LL, 2LL, s("disp")});  // tag 1
+  commitStep(*domain_, 1);
+  domain_->flushRecorders();
+
+  fs::create_directory_symlink(dir_, dir_ / "link");
+  const std::string relative = fs::relative(f, fs::current_path()).string();
+  ASSERT_NE(relative, f);
+  const std::vector<std::string> spellings = {f, (dir_ / "." / "disp.out").string(),
+                                              (dir_ / "nowhere" / ".." / "disp.out").string(),
+                                              (dir_ / "link" / "disp.out").string(), relative};
+  for (const std::string& spelling : spellings)
+    for (const char* flag : {"-file", "-fileAdd", "-csv", "-xml", "-binary"}) {
+      const std::string m = error("Node", {s(flag), s(spelling), s("-node"), 1LL, s("disp")});
+      EXPECT_EQ(m.rfind("recorder Node: file '" + spelling + "' is already written by recorder 1 (Node)", 0), 0u)
+          << m;
+      EXPECT_NE(m.find("remove that recorder first or choose another file"), std::string::npos) << m;
+      EXPECT_EQ(m.find("another model"), std::string::npos) << m;
+      // A different spelling is shown with the holder's.
+      const bool namesHolderSpelling = m.find(", which opened it as '" + f + "'") != std::string::npos;
+      EXPECT_EQ(namesHolderSpelling, spelling != f) << m;
+    }
+  std::string m = error("Element", {s("-csv"), s(f), s("-ele"), 7LL, s("force")});
+  EXPECT_EQ(m.rfind("recorder Element: file '" + f + "' is already written by recorder 1 (Node)", 0), 0u) << m;
+  m = error("EnvelopeNode", {s("-file"), s(f), s("-node"), 1LL, s("disp")});
+  EXPECT_EQ(m.rfind("recorder EnvelopeNode: file '" + f + "'", 0), 0u) << m;
+  m = error("EnvelopeElement", {s("-binary"), s(f), s("-ele"), 8LL, s("force")});
+  EXPECT_EQ(m.rfind("recorder EnvelopeElement: file '" + f + "'", 0), 0u) << m;
+  m = error("PVD", {s((dir_ / "disp").string())});  // writes disp.pvd, not disp.out: allowed
+  EXPECT_EQ(m, "(no error)");
+  EXPECT_EQ(domain_->recorders().size(), 3u);  // refused recorders were never added
+
+  // The holder's file was not touched: every row of every step, nothing else.
+  for (int step = 2; step <= 3; ++step) commitStep(*domain_, step);
+  domain_->removeRecorders();
+  const auto rows = readTable(f);
+  ASSERT_EQ(rows.size(), 3u);
+  for (int step = 1; step <= 3; ++step) {
+    ASSERT_EQ(rows[step - 1].size(), 3u);
+    EXPECT_TRUE(closeAtPrecision(rows[step - 1][0], timeOf(step)));
+    EXPECT_TRUE(closeAtPrecision(rows[step - 1][1], dispOf(step, 2, 0)));
+    EXPECT_TRUE(closeAtPrecision(rows[step - 1][2], dispOf(step, 2, 1)));
+  }
+  EXPECT_EQ(readSidecar(f)["columnCount"].number, 3.0);  // the holder's sidecar, not a refused one's
+}
+
+TEST_F(RecorderTest, FileIsFreeOnceItsRecorderIsRemovedClosedOrDestroyed) {
+  const std::string f = file("disp.out");
+  const std::vector<V> args = {s("-file"), s(f), s("-node"), 1LL, s("-dof"), 1LL, s("disp")};
+  add("Node", args);
+  EXPECT_NE(error("Node", args), "(no error)");
+  EXPECT_TRUE(domain_->removeRecorder(0));
+  add("Node", args);  // tag 1
+  domain_->removeRecorders();
+  Recorder& r = add("Node", args);  // tag 2
+  commitStep(*domain_, 1);
+  r.close();  // writes no more: the file may be taken
+  add("Node", args);
+  domain_ = makeDomain();  // destroys the old domain and its recorders
+  add("Node", args);
+  commitStep(*domain_, 1);
+  commitStep(*domain_, 2);
+  domain_->removeRecorders();
+  EXPECT_EQ(readTable(f).size(), 2u);  // the last recorder's rows alone
+}
+
+TEST_F(RecorderTest, TwoDomainsCannotShareAFile) {
+  const std::string f = file("disp.out");
+  add("Node", {s("-file"), s(f), s("-node"), 1LL, s("disp")});
+  auto other = makeDomain();
+  CommandArgs a("recorder", {s("-csv"), s(f), s("-node"), 2LL, s("disp")});
+  try {
+    Registry::global().recorders.get("Node")(a, *other);
+    ADD_FAILURE() << "a second domain took the file";
+  } catch (const OpenSeesError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "recorder Node: file '" + f + "' is already written by recorder 0 (Node) in another model; "
+              "remove that recorder first or choose another file");
+  }
+  domain_->removeRecorders();
+  CommandArgs again("recorder", {s("-csv"), s(f), s("-node"), 2LL, s("disp")});
+  other->addRecorder(Registry::global().recorders.get("Node")(again, *other));
+}
+
+TEST_F(RecorderTest, FailedRecorderLeavesNoClaim) {
+  const std::string f = file("x.out");
+  // Refused by its own checks before it claims ...
+  EXPECT_NE(error("Element", {s("-file"), s(f), s("-ele"), 7LL, s("stresses")}).find("has no response"),
+            std::string::npos);
+  EXPECT_NE(error("Node", {s("-file"), s(f), s("-node"), 42LL, s("disp")}).find("node 42"), std::string::npos);
+  // ... and after it claimed: the folder does not exist yet.
+  const std::string g = (dir_ / "later" / "x.out").string();
+  EXPECT_NE(error("Node", {s("-file"), s(g), s("-node"), 1LL, s("disp")}).find("cannot open file"),
+            std::string::npos);
+  std::ofstream(dir_ / "blocker") << "a file where the PVD folder would go\n";
+  const std::string pvd = (dir_ / "blocker" / "model").string();
+  EXPECT_NE(error("PVD", {s(pvd)}).find("cannot create the folder"), std::string::npos);
+  EXPECT_EQ(domain_->recorders().size(), 0u);
+
+  fs::create_directory(dir_ / "later");
+  fs::remove(dir_ / "blocker");
+  add("Node", {s("-file"), s(f), s("-node"), 1LL, s("disp")});
+  add("Node", {s("-file"), s(g), s("-node"), 1LL, s("disp")});
+  add("PVD", {s(pvd)});
+  EXPECT_EQ(domain_->recorders().size(), 3u);
+}
+
+TEST_F(RecorderTest, PvdRecordersOnOneNameAreRefused) {
+  const std::string name = file("model");
+  add("Node", {s("-file"), s(file("d.out")), s("-node"), 1LL, s("disp")});  // tag 0
+  add("PVD", {s(name)});                                                     // tag 1
+  std::string m = error("PVD", {s(name)});
+  EXPECT_EQ(m.rfind("recorder PVD: file '" + name + ".pvd' is already written by recorder 1 (PVD)", 0), 0u) << m;
+  m = error("vtk", {s(name + ".pvd")});
+  EXPECT_EQ(m.rfind("recorder vtk: file '" + name + ".pvd' is already written by recorder 1 (PVD)", 0), 0u) << m;
+  m = error("Node", {s("-file"), s(name + ".pvd"), s("-node"), 1LL, s("disp")});
+  EXPECT_NE(m.find("recorder 1 (PVD)"), std::string::npos) << m;
+  EXPECT_TRUE(domain_->removeRecorder(1));
+  add("PVD", {s(name)});
+}
+
+TEST(OutputFileClaim, OneOfManyThreadsWinsAFile) {
+  const std::string path = (fs::temp_directory_path() / "beamsolid_claim_race.out").string();
+  Domain domain;
+  std::atomic<int> won{0}, refused{0};
+  std::vector<std::unique_ptr<OutputFileClaim>> claims(8);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < 8; ++i)
+    threads.emplace_back([&, i] {
+      try {
+        claims[i] = std::make_unique<OutputFileClaim>(path, OutputFileClaim::Holder{&domain, i, "Node"}, "test");
+        ++won;
+      } catch (const OpenSeesError&) {
+        ++refused;
+      }
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(won, 1);
+  EXPECT_EQ(refused, 7);
+  claims.clear();
+  OutputFileClaim again(path, OutputFileClaim::Holder{&domain, 9, "Node"}, "test");
+  EXPECT_TRUE(again.held());
 }

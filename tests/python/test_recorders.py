@@ -348,3 +348,161 @@ def test_envelope_recorders_match_the_recorded_extremes(model, tmp_path):
     for path, cols in ((node_env, h[:, :n]), (ele_env, h[:, n:])):
         rows = read_text(path)
         np.testing.assert_allclose(rows, [cols.min(0), cols.max(0), np.abs(cols).max(0)], rtol=1e-15, atol=1e-300)
+
+
+# One writer per file: a recorder on a file another recorder writes is refused
+# before it opens (and so truncates) it.
+
+def _spellings(tmp_path, path):
+    """The same file as other strings: relative, with '.' and '..', through a symlinked folder."""
+    link = tmp_path / "link"
+    if not link.exists():
+        link.symlink_to(tmp_path, target_is_directory=True)
+    name = os.path.basename(path)
+    return [os.path.relpath(path), os.path.join(str(tmp_path), ".", name),
+            os.path.join(str(tmp_path), "nowhere", "..", name), os.path.join(str(link), name)]
+
+
+def test_second_recorder_on_a_file_is_refused_and_the_first_keeps_its_rows(model, tmp_path):
+    m = model
+    cantilever(m)
+    m.recorder("Node", "-file", str(tmp_path / "other.out"), "-node", 2, "disp")  # tag 0
+    path = str(tmp_path / "disp.out")
+    assert m.recorder("Node", "-file", path, "-time", "-precision", 16, "-node", 3, 4, "-dof", 1, 2, "disp") == 1
+    expected = []
+    assert m.analyze(1) == 0
+    expected.append([m.getTime(), m.nodeDisp(3, 1), m.nodeDisp(3, 2), m.nodeDisp(4, 1), m.nodeDisp(4, 2)])
+
+    refused = [("Node", flag, spelling, "-node", 2, "disp")
+               for spelling in [path, *_spellings(tmp_path, path)]
+               for flag in ("-file", "-fileAdd", "-csv", "-xml", "-binary")]
+    refused += [("Element", "-file", path, "-ele", 1, "localForce"),
+                ("EnvelopeNode", "-csv", path, "-node", 2, "disp"),
+                ("EnvelopeElement", "-xml", path, "-ele", 2, "localForce")]
+    for args in refused:
+        with pytest.raises(beamsolid.OpenSeesError) as info:
+            m.recorder(*args)
+        message = str(info.value)
+        assert message.startswith(f"recorder {args[0]}: file '{args[2]}' is already written by recorder 1 (Node)")
+        assert message.endswith("; remove that recorder first or choose another file")
+        assert "another model" not in message
+        assert (f"which opened it as '{path}'" in message) == (args[2] != path)
+
+    # The refused commands took no tag, and the holder's file is intact.
+    assert m.recorder("Node", "-file", str(tmp_path / "third.out"), "-node", 2, "disp") == 2
+    for _ in range(3):
+        assert m.analyze(1) == 0
+        expected.append([m.getTime(), m.nodeDisp(3, 1), m.nodeDisp(3, 2), m.nodeDisp(4, 1), m.nodeDisp(4, 2)])
+    m.remove("recorders")
+    np.testing.assert_allclose(read_text(path), expected, rtol=1e-15, atol=0.0)
+    with open(path + ".json") as f:
+        assert json.load(f)["columnCount"] == 5
+
+
+def elastic_bar(m, load):
+    """A truss of length 2 and EA = 100 pulled by `load`: u = 0.02 load lambda."""
+    m.model("basic", "-ndm", 3, "-ndf", 3)
+    m.node(1, 0.0, 0.0, 0.0)
+    m.node(2, 2.0, 0.0, 0.0)
+    m.fix(1, 1, 1, 1)
+    m.fix(2, 0, 1, 1)
+    m.uniaxialMaterial("Elastic", 1, 100.0)
+    m.element("truss", 1, 1, 2, 1.0, 1)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(2, load, 0.0, 0.0)
+    m.constraints("Plain")
+    m.system("UmfPack")
+    m.test("NormUnbalance", 1e-10, 10)
+    m.algorithm("Newton")
+    m.integrator("LoadControl", 0.1)
+    m.analysis("Static")
+
+
+@pytest.mark.parametrize("how", ["remove recorder", "remove recorders", "wipe"])
+def test_the_file_is_free_after_remove_or_wipe(model, tmp_path, how):
+    """OpenSees scripts often wipe and rebuild in a loop with the same recorder: each run rewrites the file."""
+    m = model
+    path = str(tmp_path / "disp.out")
+    for run, load in enumerate((1.0, 2.0, 3.0)):
+        if how == "wipe" or run == 0:
+            elastic_bar(m, load)  # each run writes other values
+        tag = m.recorder("Node", "-file", path, "-precision", 16, "-node", 2, "-dof", 1, "disp")
+        with pytest.raises(beamsolid.OpenSeesError, match=f"already written by recorder {tag} \\(Node\\)"):
+            m.recorder("Node", "-file", path, "-node", 2, "-dof", 1, "disp")
+        rows = []
+        for _ in range(2):
+            assert m.analyze(1) == 0
+            rows.append([m.nodeDisp(2, 1)])
+        if how == "remove recorder":
+            m.remove("recorder", tag)
+        elif how == "remove recorders":
+            m.remove("recorders")
+        else:
+            m.wipe()
+        np.testing.assert_allclose(read_text(path), rows, rtol=1e-15, atol=0.0)
+
+
+def test_two_models_cannot_share_a_file(ops, tmp_path):
+    path = str(tmp_path / "disp.out")
+    first, second = beamsolid.Model(), beamsolid.Model()
+    for m in (first, second, ops):
+        epp_bar(m)
+    first.recorder("Node", "-file", path, "-precision", 16, "-node", 2, "-dof", 1, "disp")
+    with pytest.raises(beamsolid.OpenSeesError) as info:
+        second.recorder("Node", "-csv", path, "-node", 2, "disp")
+    assert str(info.value) == (f"recorder Node: file '{path}' is already written by recorder 0 (Node) in another "
+                               "model; remove that recorder first or choose another file")
+    relative = os.path.relpath(path)
+    with pytest.raises(beamsolid.OpenSeesError) as info:
+        second.recorder("Node", "-xml", relative, "-node", 2, "disp")
+    assert str(info.value).startswith(f"recorder Node: file '{relative}' is already written by recorder 0 (Node) "
+                                      f"in another model, which opened it as '{path}'")
+    with pytest.raises(beamsolid.OpenSeesError, match=r"recorder 0 \(Node\) in another model"):
+        ops.recorder("Node", "-file", path, "-node", 2, "disp")
+    assert first.analyze(2) == 0
+    want = [[0.15 * 10.0 / 1000.0], [0.30 * 10.0 / 1000.0]]  # u = lambda P L / EA
+    np.testing.assert_allclose(read_text(path), want, rtol=1e-14)
+
+    # Destroying the holder's model frees the file.
+    del first
+    import gc
+    gc.collect()
+    second.recorder("Node", "-file", path, "-node", 2, "disp")
+    second.wipe()
+
+
+def test_a_failed_recorder_command_leaves_no_claim(model, tmp_path):
+    m = model
+    cantilever(m)
+    path = str(tmp_path / "x.out")
+    later = tmp_path / "later"
+    failing = [
+        ("Element", "-file", path, "-ele", 1, "noSuchResponse"),   # the element refuses the response
+        ("Node", "-file", path, "-node", 42, "disp"),               # no node 42
+        ("Node", "-file", path, "-node", 2, "disp", 3),             # an extra argument
+        ("Node", "-file", str(later / "x.out"), "-node", 2, "disp"),  # claimed, then cannot open: no folder
+    ]
+    for args in failing:
+        with pytest.raises(beamsolid.OpenSeesError):
+            m.recorder(*args)
+    later.mkdir()
+    assert m.recorder("Node", "-file", path, "-node", 2, "disp") == 0
+    assert m.recorder("Node", "-file", str(later / "x.out"), "-node", 2, "disp") == 1
+
+
+def test_pvd_recorders_on_one_name_are_refused(model, tmp_path):
+    m = model
+    cantilever(m)
+    name = str(tmp_path / "model")
+    assert m.recorder("PVD", name) == 0
+    for args in (("PVD", name), ("vtk", name + ".pvd"), ("PVD", os.path.relpath(name))):
+        with pytest.raises(beamsolid.OpenSeesError, match=r"is already written by recorder 0 \(PVD\)"):
+            m.recorder(*args)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"recorder Node: file '.*model\.pvd' .* recorder 0 \(PVD\)"):
+        m.recorder("Node", "-file", name + ".pvd", "-node", 2, "disp")
+    assert m.analyze(2) == 0
+    m.remove("recorder", 0)
+    with open(name + ".pvd") as f:
+        assert f.read().count("<DataSet") == 2
+    assert m.recorder("PVD", name) == 1  # the refused commands took no tag
