@@ -136,6 +136,13 @@ void PythonElement::registerType(const std::string& name, py::object factory) {
   if (registry.elements.has(name))
     throw OpenSeesError("register_element: element type '" + name + "' is already registered");
   // The registry outlives the interpreter; the factory reference is kept on purpose.
+  std::string origin = "Python";
+  try {
+    origin += " " + py::str(factory.attr("__module__")).cast<std::string>() + "." +
+              py::str(factory.attr("__qualname__")).cast<std::string>();
+  } catch (const py::error_already_set&) {
+    // A factory without a module or name (a lambda object, a partial) is just "Python".
+  }
   auto* kept = new py::object(std::move(factory));
   registry.elements.add(name, [name, kept](CommandArgs& args, Domain&) -> std::unique_ptr<Element> {
     py::list pyArgs;
@@ -163,7 +170,7 @@ void PythonElement::registerType(const std::string& name, py::object factory) {
     args.setContext("element " + name + " " + std::to_string(tag));
     if (nodes.empty()) args.fail("the Python element has no nodes");
     return std::make_unique<PythonElement>(tag, std::move(nodes), name, std::move(impl));
-  });
+  }, origin);
 }
 
 }  // namespace beamsolid

@@ -1,10 +1,15 @@
 // The pybind11 module: the only C++ that knows Python.
+#include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <optional>
 
 #include "bindings/Interpreter.h"
 #include "bindings/PythonElement.h"
 #include "core/BlasKernel.h"
+#include "core/PluginAbi.h"
+#include "elements/TangentCheck.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
 
@@ -73,29 +78,40 @@ PYBIND11_MODULE(_beamsolid, m) {
             return toPython(self.call(name, std::move(values)));
           },
           py::arg("name"))
-      .def("close_recorders", &Interpreter::closeRecorders);
+      .def("close_recorders", &Interpreter::closeRecorders)
+      .def(
+          "tangent_check",
+          [](Interpreter& self, int eleTag, double h) {
+            auto check = beamsolid::TangentCheck::of(self.domain().element(eleTag, "check_tangent"), h);
+            return py::make_tuple(check.tangent, check.difference);
+          },
+          py::arg("eleTag"), py::arg("h"));
 
   m.def("command_names", &Interpreter::commandNames);
   m.def("register_element", &beamsolid::PythonElement::registerType, py::arg("name"), py::arg("factory"),
         "Register a Python element class (a beamsolid.Element subclass) as element type `name`.");
-  m.def("registered_types", [](const std::string& kind) {
-    auto& r = beamsolid::Registry::global();
-    if (kind == "element") return r.elements.types();
-    if (kind == "uniaxialMaterial") return r.uniaxialMaterials.types();
-    if (kind == "nDMaterial") return r.ndMaterials.types();
-    if (kind == "geomTransf") return r.geomTransfs.types();
-    if (kind == "timeSeries") return r.timeSeries.types();
-    if (kind == "recorder") return r.recorders.types();
-    if (kind == "constraints") return r.constraintHandlers.types();
-    if (kind == "numberer") return r.numberers.types();
-    if (kind == "system") return r.systems.types();
-    if (kind == "test") return r.tests.types();
-    if (kind == "algorithm") return r.algorithms.types();
-    if (kind == "integrator") return r.integrators.types();
-    if (kind == "section") return r.sections.types();
-    if (kind == "beamIntegration") return r.beamIntegrations.types();
-    throw OpenSeesError("registered_types: unknown kind '" + kind + "'");
-  });
+  // registered_types(kind): the type names of one kind; registered_types():
+  // every kind, each type with where it came from (built-in, a plugin's path,
+  // a Python class).
+  m.def(
+      "registered_types",
+      [](const std::optional<std::string>& kind) -> py::object {
+        auto& r = beamsolid::Registry::global();
+        py::dict all;
+        py::object found = py::none();
+        r.forEachTable([&](auto& table) {
+          if (kind && table.kind() == *kind) found = py::cast(table.types());
+          py::dict origins;
+          for (const auto& [type, origin] : table.typesWithOrigin()) origins[py::str(type)] = origin;
+          all[py::str(table.kind())] = origins;
+        });
+        if (!kind) return all;
+        if (found.is_none()) throw OpenSeesError("registered_types: unknown kind '" + *kind + "'");
+        return found;
+      },
+      py::arg("kind") = py::none());
+  m.def("plugin_abi", &beamsolid::pluginAbi, "The ABI stamp a plugin must carry to be loaded (core/PluginAbi.h).");
+  m.attr("__version__") = BEAMSOLID_VERSION;
 
   // What beamsolid.blas_info() reports: the OpenBLAS loaded and the CPU's flags.
   m.def("_blas_state", []() {

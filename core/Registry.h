@@ -31,21 +31,24 @@ class Integrator;
 template <class Product>
 using Factory = std::function<std::unique_ptr<Product>(CommandArgs&, Domain&)>;
 
-// Type name -> factory for one kind of object (element, nDMaterial, ...).
+// Type name -> factory for one kind of object (element, nDMaterial, ...),
+// with where each type came from ("built-in", a plugin's path, a Python class).
 template <class Product>
 class FactoryTable {
  public:
   explicit FactoryTable(std::string kind) : kind_(std::move(kind)) {}
-  void add(const std::string& type, Factory<Product> factory) {
+  const std::string& kind() const { return kind_; }
+  void add(const std::string& type, Factory<Product> factory, std::string origin = "built-in") {
     if (factories_.count(type))
-      throw OpenSeesError("registry: " + kind_ + " type " + type + " is already registered");
-    factories_.emplace(type, std::move(factory));
+      throw OpenSeesError("registry: " + kind_ + " type " + type + " is already registered (" +
+                          factories_.at(type).origin + ")");
+    factories_.emplace(type, Entry{std::move(factory), std::move(origin)});
   }
   bool has(const std::string& type) const { return factories_.count(type) > 0; }
   const Factory<Product>& get(const std::string& type) const {
     auto it = factories_.find(type);
     if (it == factories_.end()) throw OpenSeesError(kind_ + " type " + type + " is unknown");
-    return it->second;
+    return it->second.factory;
   }
   // Reads the type name from `args` and builds it; an unknown type lists the known ones.
   std::unique_ptr<Product> build(CommandArgs& args, Domain& domain) const {
@@ -63,10 +66,32 @@ class FactoryTable {
     for (const auto& kv : factories_) out.push_back(kv.first);
     return out;
   }
+  std::vector<std::pair<std::string, std::string>> typesWithOrigin() const {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& [type, entry] : factories_) out.emplace_back(type, entry.origin);
+    return out;
+  }
+  // "element 'X' (built-in)" for every type of `other` this table has already.
+  std::vector<std::string> clashes(const FactoryTable& other) const {
+    std::vector<std::string> out;
+    for (const auto& kv : other.factories_)
+      if (auto it = factories_.find(kv.first); it != factories_.end())
+        out.push_back(kind_ + " '" + kv.first + "' (" + it->second.origin + ")");
+    return out;
+  }
+  // Takes every type of `other` (checked with clashes() first), as from `origin`.
+  void absorb(FactoryTable&& other, const std::string& origin) {
+    for (auto& [type, entry] : other.factories_) factories_.emplace(type, Entry{std::move(entry.factory), origin});
+    other.factories_.clear();
+  }
 
  private:
+  struct Entry {
+    Factory<Product> factory;
+    std::string origin;
+  };
   std::string kind_;
-  std::map<std::string, Factory<Product>> factories_;
+  std::map<std::string, Entry> factories_;
 };
 
 // Maps type names to factories. Built-in types and plugins register the same
@@ -94,11 +119,41 @@ class Registry {
   static Registry& global();
   // Built-ins announce their registration function at static-init time.
   static bool addBuiltin(RegistrationFunction fn);
-  // dlopen a plugin and call its `beamsolid_register(Registry&)`.
+  // Loads a plugin (docs/plugins.md): a shared library exporting
+  // `beamsolid_register(Registry&)` and the ABI stamp beamsolid_add_plugin()
+  // embeds. A library that is no plugin, carries another stamp, throws while
+  // registering or registers a type that exists already is refused with an
+  // OpenSeesError, and the registry is left as it was. Loading the same file
+  // again does nothing.
   void loadPlugin(const std::string& path);
+
+  // Calls f(table) for every table, or f(mine, theirs) for every pair of
+  // tables of one kind in this registry and `other`.
+  template <class F>
+  void forEachTable(F&& f) {
+    forEachTablePair(*this, [&](auto& mine, auto&) { f(mine); });
+  }
+  template <class F>
+  void forEachTablePair(Registry& other, F&& f) {
+    f(elements, other.elements);
+    f(uniaxialMaterials, other.uniaxialMaterials);
+    f(ndMaterials, other.ndMaterials);
+    f(sections, other.sections);
+    f(beamIntegrations, other.beamIntegrations);
+    f(geomTransfs, other.geomTransfs);
+    f(timeSeries, other.timeSeries);
+    f(recorders, other.recorders);
+    f(constraintHandlers, other.constraintHandlers);
+    f(numberers, other.numberers);
+    f(systems, other.systems);
+    f(tests, other.tests);
+    f(algorithms, other.algorithms);
+    f(integrators, other.integrators);
+  }
 
  private:
   static std::vector<RegistrationFunction>& builtins();
+  std::vector<std::string> plugins_;  // canonical paths of the plugins loaded
 };
 
 }  // namespace beamsolid
