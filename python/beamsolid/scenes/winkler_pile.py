@@ -131,6 +131,7 @@ class WinklerResult:
     head_rotation: float = 0.0  # du/dd at the head (negative: deflection falls with depth)
     equations: int = 0
     wall_time: float = 0.0
+    curve: list = field(default_factory=list)  # (head displacement, head force) after each step
 
     @property
     def compliance(self):
@@ -138,9 +139,17 @@ class WinklerResult:
 
 
 def run_winkler(problem: LateralPile = LateralPile(), n_elements: int = 40, k=None, head_force=None,
-                head_disp=None, m=None):
+                head_disp=None, m=None, spring="zeroLength", spring_material=None, steps=1):
     """Beam-on-springs model of the lateral pile; give `head_force` (kN) or `head_disp`
-    (m, default problem.head_disp). `k` in kN/m per m (default: `vesic_k`)."""
+    (m, default problem.head_disp). `k` in kN/m per m (default: `vesic_k`).
+
+    The springs are zeroLength elements, or with spring="NonlinearSpring3D" the tutorial
+    plugin's element (docs/plugins.md; load the plugin first), one along x and one along y
+    at each node. Their material is Elastic with stiffness k times the tributary length, or
+    what spring_material(m, matTag, stiffness) defines (e.g. an ElasticPP spring); a
+    nonlinear spring wants steps > 1, which switches to Newton."""
+    if spring not in ("zeroLength", "NonlinearSpring3D"):
+        raise ValueError(f"run_winkler: spring must be 'zeroLength' or 'NonlinearSpring3D', got {spring!r}")
     if head_force is not None and head_disp is not None:
         raise ValueError("run_winkler: give head_force or head_disp, not both")
     if head_force is None and head_disp is None:
@@ -169,27 +178,36 @@ def run_winkler(problem: LateralPile = LateralPile(), n_elements: int = 40, k=No
     for e in range(n):
         m.element("elasticBeamColumn", e + 1, e + 1, e + 2, problem.area, problem.pile_E, problem.pile_G,
                   2.0 * problem.inertia, problem.inertia, problem.inertia, TRANSF)
-    m.uniaxialMaterial("Elastic", SPRING_END, 0.5 * k * h)
-    m.uniaxialMaterial("Elastic", SPRING_INNER, k * h)
+    for mat, stiffness in ((SPRING_END, 0.5 * k * h), (SPRING_INNER, k * h)):
+        if spring_material is None:
+            m.uniaxialMaterial("Elastic", mat, stiffness)
+        else:
+            spring_material(m, mat, stiffness)
     for a in nodes:
         mat = SPRING_END if a in (nodes[0], nodes[-1]) else SPRING_INNER
-        m.element("zeroLength", n + a, GROUND + a, a, "-mat", mat, mat, "-dir", 1, 2)
+        if spring == "zeroLength":
+            m.element("zeroLength", n + a, GROUND + a, a, "-mat", mat, mat, "-dir", 1, 2)
+        else:
+            m.element(spring, n + a, GROUND + a, a, mat, "-orient", 1.0, 0.0, 0.0)
+            m.element(spring, 2 * n + 1 + a, GROUND + a, a, mat, "-orient", 0.0, 1.0, 0.0)
     m.timeSeries("Linear", 1)
     m.pattern("Plain", 1, 1)
     m.load(1, 1.0 if head_disp is not None else head_force, 0.0, 0.0, 0.0, 0.0, 0.0)
     m.constraints("Plain")
     m.numberer("RCM")
     m.system("BandSPD")
-    m.test("NormDispIncr", 1e-12, 10)
-    m.algorithm("Linear")
+    m.test("NormDispIncr", 1e-12, 25)
+    m.algorithm("Linear" if steps == 1 and spring_material is None else "Newton")
     if head_disp is not None:
-        m.integrator("DisplacementControl", 1, 1, head_disp)
+        m.integrator("DisplacementControl", 1, 1, head_disp / steps)
     else:
-        m.integrator("LoadControl", 1.0)
+        m.integrator("LoadControl", 1.0 / steps)
     m.analysis("Static")
-    if m.analyze(1) != 0:
-        raise RuntimeError("run_winkler: the analysis failed")
     r = WinklerResult(problem=problem, n_elements=n, k=k)
+    for _ in range(steps):
+        if m.analyze(1) != 0:
+            raise RuntimeError("run_winkler: the analysis failed")
+        r.curve.append((m.nodeDisp(1, 1), m.getLoadFactor(1) * (1.0 if head_disp is not None else head_force)))
     r.equations = int(m.systemSize())
     r.head_force = m.getLoadFactor(1) if head_disp is not None else head_force
     r.depths = [(a - 1) * h for a in nodes]
