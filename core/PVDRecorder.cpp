@@ -362,7 +362,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
         if (vertexOf(*element) >= nodes.size()) continue;
         cell.vtkType = kVtkVertex;
         cell.responses = {element->setResponse({"status"}), element->setResponse({"gap"}),
-                          element->setResponse({"forcescalar"}), element->setResponse({"frictionforce"}),
+                          element->setResponse({"forcescalar"}), element->setResponse({"soilfrictionforce"}),
                           element->setResponse({"normal"})};
         contacts.push_back(std::move(cell));
         break;

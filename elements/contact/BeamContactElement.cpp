@@ -244,7 +244,11 @@ Response BeamContactElement::setResponse(const std::vector<std::string>& args) {
   const std::string what = lowerCase(args[0]);
   if (what == "force")
     return Response::named({"Fx", "Fy", "Fz"}, [this] { return withoutNegativeZeros(contactForce()); });
+  // OpenSees reports the friction acting on the pile (a pile pulled up reads
+  // a downward force); the friction acting on the soil node is ours.
   if (what == "frictionforce")
+    return Response::named({"Fx", "Fy", "Fz"}, [this] { return withoutNegativeZeros(Vector3(-frictionForce())); });
+  if (what == "soilfrictionforce")
     return Response::named({"Fx", "Fy", "Fz"}, [this] { return withoutNegativeZeros(frictionForce()); });
   if (what == "forcescalar")
     return Response::named({"N", "T1", "T2"}, [this] { return withoutNegativeZeros(forceScalars()); });

@@ -157,7 +157,7 @@ def interface_forces(ops, iface):
     for e in iface.elements:
         status = int(ops.eleResponse(e, "status")[0])
         normal += ops.eleResponse(e, "forcescalar")[0]
-        f = ops.eleResponse(e, "frictionforce")
+        f = ops.eleResponse(e, "soilFrictionForce")
         for i in range(3):
             friction[i] += f[i]
         magnitude += math.sqrt(sum(c * c for c in f))

@@ -457,8 +457,10 @@ TEST(BeamContact3D, SlipOfTheSoilNodeAlongAndAroundAStraightPile) {
   m->setDisp(3, Vector(Vector3(0.0, 0.0, delta)));
   m->element->update();
   ASSERT_EQ(m->element->status(), BeamContactElement::Status::Sticking);
-  const Vector friction = m->element->setResponse({"frictionforce"}).value();
+  const Vector friction = m->element->setResponse({"soilFrictionForce"}).value();
   EXPECT_LE((friction - Vector(Vector3(0.0, 0.0, -kG * delta))).norm(), 1e-12);
+  // OpenSees' frictionforce is the reaction on the pile: the opposite.
+  EXPECT_LE((m->element->setResponse({"frictionforce"}).value() + friction).norm(), 0.0);
   const Vector force = m->element->setResponse({"force"}).value();
   EXPECT_LE((force - Vector(Vector3(50.0, 0.0, -kG * delta))).norm(), 1e-12);
   const Vector scalars = m->element->setResponse({"forcescalar"}).value();
@@ -549,7 +551,7 @@ TEST(BeamContact3D, ResponsesHaveOpenSeesNamesAndSizes) {
   const std::pair<const char*, std::size_t> expected[] = {
       {"force", 3},        {"frictionforce", 3},  {"forcescalar", 3},   {"masterforce", 6},   {"primaryforce", 6},
       {"mastermoment", 6}, {"primarymoment", 6},  {"masterreaction", 12}, {"primaryreaction", 12},
-      {"slip", 2},         {"gap", 1},            {"status", 1},        {"xi", 1},            {"frictionForce", 3}};
+      {"slip", 2},         {"gap", 1},            {"status", 1},        {"xi", 1},            {"frictionForce", 3},  {"soilFrictionForce", 3}};
   for (const auto& [what, size] : expected) {
     const Response r = m->element->setResponse({what});
     ASSERT_TRUE(r) << what;

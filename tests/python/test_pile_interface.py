@@ -106,6 +106,10 @@ def test_chained_pullout_keeps_every_node_and_full_friction(ops):
         assert abs(f.friction[0]) + abs(f.friction[1]) <= 1e-8 * f.friction[2]
         error = abs(f.friction[2] - MU * f.normal) / (MU * f.normal)
         assert error <= 1e-10, f"step {step}: friction {f.friction[2]} vs mu N {MU * f.normal}"
+        # OpenSeesPy's frictionforce is the friction on the pile: the pile pulled up reads it down.
+        on_pile = [ops.eleResponse(e, "frictionforce") for e in iface.elements]
+        assert all(v[2] < 0.0 for v in on_pile), f"step {step}"
+        assert sum(v[2] for v in on_pile) == pytest.approx(-f.friction[2], rel=1e-14)
         # The pile's support carries it. A hand-over redistributes a contact force over the new
         # segment's nodes (statically equivalent: the sum over the pile is kept) and leaves a small
         # unbalance at the free pile nodes, which the next step removes.

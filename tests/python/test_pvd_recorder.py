@@ -214,7 +214,7 @@ def test_pvd_recorder_writes_what_the_model_holds(ops, tmp_path):
         close(data["contactGap"][c].ravel(), [ops.eleResponse(t, "gap")[0] for t in contacts], rtol)
         close(data["contactNormalForce"][c].ravel(), [ops.eleResponse(t, "forcescalar")[0] for t in contacts],
               rtol)
-        close(data["contactFrictionForce"][c], [ops.eleResponse(t, "frictionforce") for t in contacts], rtol)
+        close(data["contactFrictionForce"][c], [ops.eleResponse(t, "soilFrictionForce") for t in contacts], rtol)
         close(data["contactNormal"][c], [ops.eleResponse(t, "normal") for t in contacts], rtol)
         for array in ("contactStatus", "contactGap", "contactNormalForce", "contactFrictionForce", "contactNormal"):
             assert not data[array][:nb + nl].any()

@@ -293,7 +293,7 @@ class DonutModel:
         r.head_rotation.append(m.nodeDisp(head, 6))
         r.head_force.append(m.nodeReaction(head, 3))
         r.head_moment.append(m.nodeReaction(head, 6))
-        r.friction_sum.append(sum(m.eleResponse(t, "frictionforce")[2] for t in self.contacts))
+        r.friction_sum.append(sum(m.eleResponse(t, "soilFrictionForce")[2] for t in self.contacts))
         r.normal_sum.append(sum(f[0] for f in scalars))
         stick, slide = self.status_counts()
         r.sticking.append(stick)
