@@ -19,4 +19,5 @@ SCRIPTS = (
     "mixed_pile",
     "response_names",
     "zerolength_contact",
+    "beam_contact",
 )

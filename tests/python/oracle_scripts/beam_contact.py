@@ -1,0 +1,75 @@
+"""BeamContact3D between a beam segment and one soil node pressed onto it, then the pile pulled
+up (DisplacementControl) so that the node sticks and then slides: every response OpenSees names
+for the element (force, frictionforce, forcescalar, masterforce, mastermoment, masterreaction, slip,
+gap, status) after each step, the soil node's displacement and the pull's load factor.
+
+frictionforce is the friction acting on the pile: a pile pulled up reads a negative z.
+
+Nodes: beam 1 (0, 0, 0) and 2 (0, 0, 2), ndf 6, free only along z (a 1 kN/m spring under 1); soil node 3 at (R, 0, 1) on a
+zeroLength spring (k = 1000 in x, y, z) to fixed node 8, pushed onto the pile by N = 10 kN;
+Lagrange multiplier node 4. Friction mu = 0.3 and stick stiffness G = 1000 from the start (stage
+1), so the pile is held vertically by the stick: sliding starts at mu N = 3 kN, a pull of
+3/G + 3/k = 6 mm (steps 1-5 stick, 6-10 slide).
+"""
+R = 0.3
+RESPONSES = ("force", "frictionforce", "forcescalar", "masterforce", "mastermoment", "masterreaction", "slip")
+
+
+def run(ops):
+    out = {}
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 0.0, 0.0, 2.0)
+    for n in (1, 2):
+        ops.fix(n, 1, 1, 0, 1, 1, 1)
+    # A soft vertical spring (1 kN/m) under the pile: before the first iteration has a normal
+    # force the contact has no friction capacity, and the pile no vertical stiffness. (OpenSees
+    # solves that singular first iteration regardless; BeamSolid refuses a singular matrix.)
+    ops.node(9, 0.0, 0.0, 0.0)
+    ops.fix(9, 1, 1, 1, 1, 1, 1)
+    ops.uniaxialMaterial("Elastic", 9, 1.0)
+    ops.element("zeroLength", 31, 9, 1, "-mat", 9, "-dir", 3)
+    ops.geomTransf("Linear", 1, 1.0, 0.0, 0.0)
+    ops.element("elasticBeamColumn", 10, 1, 2, 0.28, 3e7, 1.2e7, 0.0127, 0.0064, 0.0064, 1)
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(3, R, 0.0, 1.0)
+    ops.node(4, R, 0.0, 1.0)
+    ops.node(8, R, 0.0, 1.0)
+    ops.fix(8, 1, 1, 1)
+    ops.uniaxialMaterial("Elastic", 3, 1000.0)
+    ops.element("zeroLength", 30, 8, 3, "-mat", 3, 3, 3, "-dir", 1, 2, 3)
+    ops.nDMaterial("ContactMaterial3D", 1, 0.3, 1000.0, 0.0, 0.0)
+    ops.element("BeamContact3D", 20, 1, 2, 3, 4, R, 1, 1, 1e-10, 1e-10)
+
+    ops.updateMaterialStage("-material", 1, "-stage", 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(3, -10.0, 0.0, 0.0)
+    ops.constraints("Transformation")
+    ops.numberer("Plain")
+    ops.system("UmfPack")
+    ops.test("NormDispIncr", 1e-12, 30)
+    ops.algorithm("Newton")
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    out["press.code"] = ops.analyze(1)
+    _read(ops, out, "press")
+
+    ops.loadConst("-time", 0.0)
+    ops.timeSeries("Linear", 2)
+    ops.pattern("Plain", 2, 2)
+    ops.load(2, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    ops.integrator("DisplacementControl", 2, 3, 0.001)
+    for step in range(10):
+        out[f"pull{step}.code"] = ops.analyze(1)
+        out[f"pull{step}.iter"] = ops.testIter()
+        out[f"pull{step}.lambda"] = ops.getLoadFactor(2)
+        _read(ops, out, f"pull{step}")
+    return out
+
+
+def _read(ops, out, key):
+    for r in RESPONSES:
+        out[f"{key}.{r}"] = ops.eleResponse(20, r)
+    out[f"{key}.soil"] = ops.nodeDisp(3)
