@@ -31,6 +31,7 @@ import sys
 import time
 from dataclasses import replace
 
+import beamsolid
 from beamsolid.scenes.donut_pullout import PAPER_TABLE1, DonutPullout, run
 
 OUT = pathlib.Path(os.environ.get("BEAMSOLID_OUT", pathlib.Path(__file__).parent / "output"))
@@ -67,6 +68,8 @@ def describe(s):
     print(f"  confinement: self weight, uniaxial strain: sigma_h = K0 gamma z, K0 = nu/(1-nu) = {s.K0:.4f}, "
           f"int_0^D sigma_h dz = {s.sigma_h_integral:.3f} kN/m")
     print(f"  contacts: {(s.n_z + 1) * s.n_theta} BeamContact3D, ContactMaterial3D(mu, G = {s.G:g}, c = 0, t = 0)")
+    blas = beamsolid.blas_info()
+    print(f"  BLAS: {blas.config.split(' NO_')[0] or 'not OpenBLAS'}, kernel {blas.kernel or '-'}: {blas.reason}")
 
 
 def table(results):
