@@ -4,12 +4,13 @@ import pathlib
 import pytest
 
 from beamsolid import OpenSeesError
+from conftest import PLUGIN_DIR
 
-PLUGIN = pathlib.Path(__file__).resolve().parents[2] / "build" / "plugins" / "liblinear_spring_plugin.so"
+PLUGIN = pathlib.Path(PLUGIN_DIR) / "liblinear_spring_plugin.so"
 
 
 def test_plugin_element_solves_like_a_builtin(model):
-    assert PLUGIN.exists(), f"{PLUGIN} is built by `make build`"
+    assert PLUGIN.exists(), f"{PLUGIN} is built by `make build` (`make sanitize` for build-sanitize)"
     model.loadPlugin(str(PLUGIN))
     model.model("basic", "-ndm", 3, "-ndf", 3)
     model.node(1, 0.0, 0.0, 0.0)
