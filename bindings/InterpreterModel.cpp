@@ -133,12 +133,16 @@ Result Interpreter::equalDOF(CommandArgs& a) {
   const int r = a.nextInt("retainedNode");
   const int c = a.nextInt("constrainedNode");
   a.setContext("equalDOF " + std::to_string(r) + " " + std::to_string(c));
+  const std::size_t at = a.position();
   const auto dofs = a.nextInts("dof", 1);
   a.expectEnd();
   MPConstraint mp;
   mp.retainedNode = r;
   mp.constrainedNode = c;
-  for (int d : dofs) {
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    const int d = dofs[i];
+    // Checked before d - 1, which overflows for the most negative int.
+    if (d < 1) a.failAt(at + i, "dof", "dof numbers >= 1 (1-based)");
     mp.retainedDofs.push_back(d - 1);
     mp.constrainedDofs.push_back(d - 1);
   }
@@ -388,6 +392,7 @@ Result Interpreter::remove(CommandArgs& a) {
     domain_->removeRecorders();
   } else if (what == "sp") {
     const int node = a.nextInt("nodeTag"), dof = a.nextInt("dof");
+    if (dof < 1) a.failAt(a.position() - 1, "dof", "a dof number >= 1 (1-based)");
     if (!domain_->removeSP(node, dof - 1))
       a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) + " has no single-point constraint");
   } else if (what == "mp") {
