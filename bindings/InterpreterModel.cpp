@@ -1,5 +1,6 @@
 // Model-building commands of the Interpreter.
 #include <cmath>
+#include <exception>
 #include <optional>
 
 #include "bindings/Interpreter.h"
@@ -12,7 +13,14 @@ using Result = Interpreter::Result;
 
 Result Interpreter::wipe(CommandArgs& a) {
   a.expectEnd();
-  domain_->removeRecorders();
+  // A recorder that cannot write its file still leaves the model wiped; its
+  // error is raised at the end.
+  std::exception_ptr recorderFailure;
+  try {
+    domain_->removeRecorders();
+  } catch (const OpenSeesError&) {
+    recorderFailure = std::current_exception();
+  }
   analysis_.reset();
   components_ = AnalysisComponents{};
   haveAnalysis_ = false;
@@ -22,6 +30,7 @@ Result Interpreter::wipe(CommandArgs& a) {
   currentSectionTag_ = -1;
   eigenvalues_.clear();
   testMaterial_.reset();
+  if (recorderFailure) std::rethrow_exception(recorderFailure);
   return {};
 }
 
