@@ -164,8 +164,9 @@ def random_call(rng, commands, types, templates):
 def run(seed, sequences, calls_per_sequence, first=0, trace=None, max_findings=20):
     """Run sequences first .. first+sequences-1 of `seed`; return the counts.
 
-    Returns a dict: sequences, calls, ok, errors (OpenSeesError), findings (calls
-    that raised anything else) and the first `max_findings` of them in detail
+    Returns a dict: sequences, calls, ok, errors (OpenSeesError), wipe_errors
+    (OpenSeesError from the wipe that ends a sequence), findings (calls that
+    raised anything else) and the first `max_findings` of them in detail
     (seed, sequence, call index, command, arguments, exception). With `trace`
     (a text stream), every call is written and flushed before it is made, so the
     last line names the call that crashed the process.
@@ -176,8 +177,8 @@ def run(seed, sequences, calls_per_sequence, first=0, trace=None, max_findings=2
     types = {name: beamsolid.registered_types(name) for name in TYPED_COMMANDS}
     commands = [c for c in beamsolid.command_names() if c not in SKIPPED_COMMANDS]
     templates = [t for t in TEMPLATES if t[0] in commands]
-    counts = {"seed": seed, "first": first, "sequences": 0, "calls": 0, "ok": 0, "errors": 0, "findings": 0,
-              "finding_details": []}
+    counts = {"seed": seed, "first": first, "sequences": 0, "calls": 0, "ok": 0, "errors": 0, "wipe_errors": 0,
+              "findings": 0, "finding_details": []}
     m = beamsolid.Model()
     for index in range(first, first + sequences):
         rng = sequence_rng(seed, index)
@@ -205,7 +206,16 @@ def run(seed, sequences, calls_per_sequence, first=0, trace=None, max_findings=2
                     counts["finding_details"].append(
                         {"seed": seed, "sequence": index, "call": call, "command": name, "args": repr(args),
                          "exception": f"{type(e).__name__}: {e}"})
-        m.wipe()
+        try:
+            m.wipe()
+        except OpenSeesError:
+            counts["wipe_errors"] += 1  # e.g. a recorder that cannot write; the model is wiped all the same
+        except Exception as e:
+            counts["findings"] += 1
+            if len(counts["finding_details"]) < max_findings:
+                counts["finding_details"].append({"seed": seed, "sequence": index, "call": "final wipe",
+                                                  "command": "wipe", "args": "[]",
+                                                  "exception": f"{type(e).__name__}: {e}"})
         counts["sequences"] += 1
     return counts
 
