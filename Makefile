@@ -60,11 +60,17 @@ SAN_UBSAN := print_stacktrace=1:halt_on_error=1
 # Leak detection is off for the Python run only: CPython and pybind11 keep
 # interned objects, module state and static type data alive at exit by design,
 # so LeakSanitizer would report them; the C++ tests (ctest) keep it on.
+# pytest captures file descriptor 2, so a report written there would be lost
+# with the aborted process: the Python run writes reports (its children's too)
+# into files, and any file there fails the run, even from a child whose
+# failure a test expected.
+SAN_REPORTS = $(abspath $(SAN_BUILD))/sanitizer-reports
 SAN_PYTHON_ENV = LD_PRELOAD="$(SAN_PRELOAD)" PYTHONMALLOC=malloc \
-  ASAN_OPTIONS=detect_leaks=0:$(SAN_ASAN_COMMON) UBSAN_OPTIONS=$(SAN_UBSAN) \
+  ASAN_OPTIONS=detect_leaks=0:$(SAN_ASAN_COMMON):log_path=$(SAN_REPORTS)/asan \
+  UBSAN_OPTIONS=$(SAN_UBSAN):log_path=$(SAN_REPORTS)/ubsan \
   PYTHONPATH=$(abspath $(SAN_BUILD))/python BEAMSOLID_PLUGIN_DIR=$(abspath $(SAN_BUILD))/plugins
-# Extra pytest arguments for the sanitizer run (e.g. -k to pick tests).
-SAN_PYTEST_ARGS ?=
+# What pytest runs under the sanitizers (e.g. a single test file, or -k to pick tests).
+SAN_PYTEST_ARGS ?= tests/python
 
 $(SAN_BUILD)/CMakeCache.txt: | venv
 	$(VENV)/bin/cmake -S . -B $(SAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -82,7 +88,11 @@ sanitize: sanitize-build
 	@# the run below must import the sanitized build, not python/beamsolid
 	$(SAN_PYTHON_ENV) $(PY) -c "import beamsolid._beamsolid as b, sys; \
 	  sys.exit(0 if b.__file__.startswith('$(abspath $(SAN_BUILD))/') else 'imported ' + b.__file__)"
-	$(SAN_PYTHON_ENV) $(PY) -m pytest tests/python -q $(SAN_PYTEST_ARGS)
+	rm -rf $(SAN_REPORTS) && mkdir -p $(SAN_REPORTS)
+	$(SAN_PYTHON_ENV) $(PY) -m pytest -q $(SAN_PYTEST_ARGS); status=$$?; \
+	  if [ -n "$$(ls -A $(SAN_REPORTS))" ]; then cat $(SAN_REPORTS)/*; \
+	    echo "make sanitize: sanitizer reports above (files in $(SAN_REPORTS))"; exit 1; fi; \
+	  exit $$status
 
 clean:
 	rm -rf $(BUILD) $(SAN_BUILD) python/beamsolid/*.so
