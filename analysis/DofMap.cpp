@@ -190,6 +190,18 @@ void DofMap::build(const Domain& domain, const ConstraintHandler& handler, const
     elements_.push_back(e.get());
   }
 
+  // --- nodal terms -----------------------------------------------------------------
+  // A nodal mass on a dof tied to several equations (a node constrained by a
+  // rigidLink) couples them all (T^T m T in AnalysisModel::assembleMass), even
+  // where no element does. The pattern holds these couplings for every such
+  // dof: a mass may be set after the pattern is built.
+  for (std::size_t f = 0; f + 1 < fullTermStart_.size(); ++f) {
+    const int first = fullTermStart_[f], last = fullTermStart_[f + 1];
+    if (last - first < 2) continue;
+    for (int b = first; b < last; ++b)
+      for (int a = first; a < last; ++a) columns[fullTerms_[b].equation].push_back(fullTerms_[a].equation);
+  }
+
   // --- penalty terms -------------------------------------------------------------
   penaltySPs_.clear();
   penaltyMPs_.clear();

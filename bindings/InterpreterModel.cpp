@@ -1,5 +1,6 @@
 // Model-building commands of the Interpreter.
 #include <cmath>
+#include <exception>
 #include <optional>
 
 #include "bindings/Interpreter.h"
@@ -12,7 +13,14 @@ using Result = Interpreter::Result;
 
 Result Interpreter::wipe(CommandArgs& a) {
   a.expectEnd();
-  domain_->removeRecorders();
+  // A recorder that cannot write its file still leaves the model wiped; its
+  // error is raised at the end.
+  std::exception_ptr recorderFailure;
+  try {
+    domain_->removeRecorders();
+  } catch (const OpenSeesError&) {
+    recorderFailure = std::current_exception();
+  }
   analysis_.reset();
   components_ = AnalysisComponents{};
   haveAnalysis_ = false;
@@ -22,6 +30,7 @@ Result Interpreter::wipe(CommandArgs& a) {
   currentSectionTag_ = -1;
   eigenvalues_.clear();
   testMaterial_.reset();
+  if (recorderFailure) std::rethrow_exception(recorderFailure);
   return {};
 }
 
@@ -133,12 +142,16 @@ Result Interpreter::equalDOF(CommandArgs& a) {
   const int r = a.nextInt("retainedNode");
   const int c = a.nextInt("constrainedNode");
   a.setContext("equalDOF " + std::to_string(r) + " " + std::to_string(c));
+  const std::size_t at = a.position();
   const auto dofs = a.nextInts("dof", 1);
   a.expectEnd();
   MPConstraint mp;
   mp.retainedNode = r;
   mp.constrainedNode = c;
-  for (int d : dofs) {
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    const int d = dofs[i];
+    // Checked before d - 1, which overflows for the most negative int.
+    if (d < 1) a.failAt(at + i, "dof", "dof numbers >= 1 (1-based)");
     mp.retainedDofs.push_back(d - 1);
     mp.constrainedDofs.push_back(d - 1);
   }
@@ -388,6 +401,7 @@ Result Interpreter::remove(CommandArgs& a) {
     domain_->removeRecorders();
   } else if (what == "sp") {
     const int node = a.nextInt("nodeTag"), dof = a.nextInt("dof");
+    if (dof < 1) a.failAt(a.position() - 1, "dof", "a dof number >= 1 (1-based)");
     if (!domain_->removeSP(node, dof - 1))
       a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) + " has no single-point constraint");
   } else if (what == "mp") {

@@ -28,11 +28,25 @@ FiberSection3d& currentFiberSection(const Domain& domain, int tag, const Command
   return *fibers;
 }
 
+// Fibers one patch, layer or section may hold. Real sections have hundreds;
+// without a ceiling a typo such as 2**31 - 1 subdivisions asks for hundreds of
+// gigabytes and ends the process instead of raising OpenSeesError.
+constexpr long long kMaxFibers = 1'000'000;
+
 int readCount(CommandArgs& a, const char* what) {
   const std::size_t at = a.position();
   const int n = a.nextInt(what);
   if (n < 1) a.failAt(at, what, "an integer >= 1");
+  if (n > kMaxFibers) a.failAt(at, what, "at most " + std::to_string(kMaxFibers));
   return n;
+}
+
+// Checks the fiber count of a patch (n1 x n2 subdivisions) before any is made.
+void checkFiberCount(const CommandArgs& a, std::size_t at, const char* what, int n1, int n2) {
+  const long long fibers = static_cast<long long>(n1) * n2;
+  if (fibers > kMaxFibers)
+    a.failAt(at, what, "at most " + std::to_string(kMaxFibers) + " fibers per patch (" + std::to_string(n1) +
+                           " x " + std::to_string(n2) + " = " + std::to_string(fibers) + ")");
 }
 
 double readPositive(CommandArgs& a, const char* what) {
@@ -64,7 +78,9 @@ Result Interpreter::patch(CommandArgs& a) {
   const UniaxialMaterial& material = domain_->uniaxialMaterials.get(matTag, a.context());
   if (type == "rect" || type == "rectangular") {
     const int ny = readCount(a, "numSubdivY");
+    const std::size_t nzAt = a.position();
     const int nz = readCount(a, "numSubdivZ");
+    checkFiberCount(a, nzAt, "numSubdivZ", ny, nz);
     const double yI = a.nextDouble("yI"), zI = a.nextDouble("zI");
     const double yJ = a.nextDouble("yJ"), zJ = a.nextDouble("zJ");
     a.expectEnd();
@@ -72,7 +88,9 @@ Result Interpreter::patch(CommandArgs& a) {
     addFibers(section, material, fibergeometry::rectPatch(ny, nz, yI, zI, yJ, zJ));
   } else if (type == "quad" || type == "quadr" || type == "quadrilateral") {
     const int nIJ = readCount(a, "numSubdivIJ");
+    const std::size_t nJKAt = a.position();
     const int nJK = readCount(a, "numSubdivJK");
+    checkFiberCount(a, nJKAt, "numSubdivJK", nIJ, nJK);
     std::array<Eigen::Vector2d, 4> v;
     static const char* const names[4][2] = {{"yI", "zI"}, {"yJ", "zJ"}, {"yK", "zK"}, {"yL", "zL"}};
     for (int k = 0; k < 4; ++k) {
@@ -86,7 +104,9 @@ Result Interpreter::patch(CommandArgs& a) {
     addFibers(section, material, fibergeometry::quadPatch(nIJ, nJK, v));
   } else if (type == "circ" || type == "circular") {
     const int nCirc = readCount(a, "numSubdivCirc");
+    const std::size_t nRadAt = a.position();
     const int nRad = readCount(a, "numSubdivRad");
+    checkFiberCount(a, nRadAt, "numSubdivRad", nCirc, nRad);
     const double yC = a.nextDouble("yCenter"), zC = a.nextDouble("zCenter");
     std::size_t at = a.position();
     const double inner = a.nextDouble("intRad");

@@ -1,6 +1,8 @@
 #include "core/Domain.h"
 
 #include <algorithm>
+#include <exception>
+#include <iostream>
 #include <set>
 
 #include "core/OpenSeesError.h"
@@ -10,8 +12,16 @@ namespace beamsolid {
 Domain::Domain() = default;
 
 Domain::~Domain() {
-  // Recorded data is never lost: close (and so flush) every recorder.
-  for (auto& [tag, r] : recorders_) r->close();
+  // Recorded data is never lost: close (and so flush) every recorder. An
+  // exception leaving a destructor ends the process (std::terminate), so a
+  // recorder that cannot write is reported on stderr instead.
+  for (auto& [tag, r] : recorders_) {
+    try {
+      r->close();
+    } catch (const std::exception& e) {
+      std::cerr << "WARNING " << e.what() << '\n';
+    }
+  }
 }
 
 void Domain::addNode(std::unique_ptr<Node> node, const std::string& context) {
@@ -222,14 +232,28 @@ int Domain::addRecorder(std::unique_ptr<Recorder> recorder) {
 bool Domain::removeRecorder(int tag) {
   auto it = recorders_.find(tag);
   if (it == recorders_.end()) return false;
-  it->second->close();
+  // Removed even when closing fails: the failure is raised here, once.
+  std::unique_ptr<Recorder> recorder = std::move(it->second);
   recorders_.erase(it);
+  recorder->close();
   return true;
 }
 
 void Domain::removeRecorders() {
-  for (auto& [tag, r] : recorders_) r->close();
+  // Every recorder is closed and removed even when one of them fails (a
+  // failure must not leave the others open, or wipe half done); the first
+  // failure is raised afterwards.
+  std::map<int, std::unique_ptr<Recorder>> recorders = std::move(recorders_);
   recorders_.clear();
+  std::exception_ptr firstFailure;
+  for (auto& [tag, r] : recorders) {
+    try {
+      r->close();
+    } catch (...) {
+      if (!firstFailure) firstFailure = std::current_exception();
+    }
+  }
+  if (firstFailure) std::rethrow_exception(firstFailure);
 }
 
 void Domain::record() {

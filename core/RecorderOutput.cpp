@@ -219,7 +219,9 @@ void RecorderOutput::rewriteRows(const std::vector<std::vector<double>>& rows) {
   if (closed_) return;
   if (file_.is_open()) file_.close();
   std::error_code ec;
-  std::filesystem::resize_file(options_.path, baseSize_, ec);
+  // Only a regular file can be cut back to its header; a device such as
+  // /dev/null has nothing to cut (resize_file fails there with EINVAL).
+  if (std::filesystem::is_regular_file(options_.path, ec)) std::filesystem::resize_file(options_.path, baseSize_, ec);
   if (ec) throw OpenSeesError(context_ + ": cannot rewrite file '" + options_.path + "': " + ec.message());
   open(false);
   writeHeader();

@@ -16,8 +16,8 @@ def _close_all_models():
         try:
             model._interp.close_recorders()
             model._interp.call("wipe")
-        except OpenSeesError:
-            pass
+        except OpenSeesError as e:  # too late to raise: say what was not written
+            print(f"WARNING {e}", file=sys.stderr)
 
 
 def _make_command(name):

@@ -3,8 +3,13 @@ import sys
 
 import pytest
 
-# `make test` sets PYTHONPATH=python; this keeps `pytest` alone working too.
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+# `make test` sets PYTHONPATH=python and `make sanitize` PYTHONPATH=build-sanitize/python;
+# without PYTHONPATH, `pytest` alone imports the working tree's package. With it,
+# the caller's choice stands (inserting python/ first would hide the sanitizer build).
+if not os.environ.get("PYTHONPATH"):
+    sys.path.insert(0, os.path.join(REPO, "python"))
 
 import beamsolid  # noqa: E402
 
@@ -12,6 +17,11 @@ import beamsolid  # noqa: E402
 # must run the same build (the in-place one, an installed one, or the
 # sanitizer build), so it goes first on the child's path.
 PACKAGE_PARENT = os.path.dirname(os.path.dirname(os.path.abspath(beamsolid.__file__)))
+
+# The example C++ plugin (CMakeLists.txt: <build>/plugins) must come from the same
+# build as the package, since it links that build's libbeamsolid.so: `make sanitize`
+# names build-sanitize/plugins; otherwise it is the normal build's.
+PLUGIN_DIR = os.environ.get("BEAMSOLID_PLUGIN_DIR") or os.path.join(REPO, "build", "plugins")
 
 
 def subprocess_env(**extra):

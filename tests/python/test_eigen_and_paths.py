@@ -76,3 +76,24 @@ def test_elastic_perfectly_plastic_truss_under_displacement_control(ops):
         assert u == pytest.approx(du * round(u / du), rel=1e-12)
     assert path[-1][0] == pytest.approx(60 * du, rel=1e-12)
     assert ops.eleResponse(1, "axialForce")[0] == pytest.approx(fy_force, rel=1e-12)
+
+
+@pytest.mark.parametrize("solver", [(), ("-fullGenLapack",)])
+def test_mass_on_a_rigidly_linked_node_reaches_the_system_only_through_the_pattern(ops, solver):
+    """A mass at a node constrained by rigidLink('beam') couples the retained node's
+    translations and rotations (T^T m T). With no element at either node nothing else
+    couples them, and the sparse pattern lacked those entries: assembleMass wrote at
+    position -1 (ASan heap-buffer-overflow, found by the command fuzzer). Now they are in
+    the pattern, and eigen reports what is wrong with such a model instead."""
+    import beamsolid
+
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(2, 1.0, 0.0, 0.0)
+    ops.node(3, 1.0, 0.0, 1.0)
+    ops.rigidLink("beam", 2, 3)
+    ops.mass(3, 2.0, 2.0, 2.0, 0.0, 0.0, 0.0)
+    with pytest.raises(beamsolid.OpenSeesError, match="(mechanism|singular).*node 2 dof 6|node 2 dof 6.*mechanism"):
+        ops.eigen(*solver, 1)
+    ops.mass(3, -2.0, 2.0, 2.0, 0.0, 0.0, 0.0)
+    with pytest.raises(beamsolid.OpenSeesError, match="node 2 dof 1 has a negative mass"):
+        ops.eigen(*solver, 1)

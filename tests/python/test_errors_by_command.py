@@ -81,6 +81,10 @@ CASES = [
     ("eleLoad element", "eleLoad", ("-ele", 42, "-type", "-beamUniform", 1.0, 0.0), ["element 42 does not exist"]),
     ("eleLoad kind", "eleLoad", ("-ele", 3, "-type", "-beamUniform", 1.0, 0.0), ["does not accept -beamUniform"]),
     ("equalDOF dof", "equalDOF", (11, 12, 5), ["dof 5 is out of range"]),
+    # dof - 1 overflowed for the most negative int (UBSan, found by the command fuzzer)
+    ("equalDOF dof int min", "equalDOF", (11, 12, 1, -2**31), ["equalDOF 11 12", "argument 4 (dof)", ">= 1"]),
+    ("equalDOF dof zero", "equalDOF", (11, 12, 0), ["equalDOF 11 12", "argument 3 (dof)", ">= 1"]),
+    ("remove sp dof int min", "remove", ("sp", 12, -2**31), ["remove", "argument 3 (dof)", ">= 1"]),
     ("rigidLink count", "rigidLink", ("beam", 1), ["rigidLink", "argument 3 (constrainedNode)"]),
     ("fixZ flags", "fixZ", (0.0,), ["fixZ", "no constraint flags"]),
     # analysis objects

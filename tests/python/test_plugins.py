@@ -14,15 +14,17 @@ import pytest
 import beamsolid
 from beamsolid import OpenSeesError
 from beamsolid.testing import check_tangent
+from conftest import PLUGIN_DIR
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-BUILD = ROOT / "build"
-TUTORIAL = BUILD / "plugins" / "libnonlinear_spring.so"
+# The plugins of the build the package came from (make build, or make sanitize's build-sanitize).
+TUTORIAL = pathlib.Path(PLUGIN_DIR) / "libnonlinear_spring.so"
+TEST_PLUGINS = pathlib.Path(PLUGIN_DIR).parent / "test-plugins"
 
 
 def plugin_path(name):
-    path = BUILD / "test-plugins" / f"lib{name}.so"
-    assert path.exists(), f"{path} is built by `make build`"
+    path = TEST_PLUGINS / f"lib{name}.so"
+    assert path.exists(), f"{path} is built by `make build` (`make sanitize` for build-sanitize)"
     return str(path)
 
 

@@ -53,7 +53,7 @@ def _run_oracle():
         return None
     try:
         p = subprocess.run([ORACLE, "-c", _ORACLE_SCRIPT, str(EXAMPLES)], capture_output=True, text=True,
-                           timeout=300)
+                           timeout=300, env=compare.oracle_env())
     except (OSError, subprocess.SubprocessError):
         return None
     if "RESULT" not in p.stdout:

@@ -287,6 +287,23 @@ def test_section_commands_report_errors(ops):
         ops.beamIntegration("Legendre", 1, 4, 3)
 
 
+def test_absurd_fiber_counts_are_errors_not_out_of_memory(ops):
+    """patch('circ', 1, 4, 2**31 - 1, ...) asked for 200 GB and ASan aborted (found by the
+    command fuzzer): a patch or layer of more than a million fibers is an OpenSeesError that
+    names the argument."""
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.uniaxialMaterial("Elastic", 1, 1.0)
+    ops.section("Fiber", 1, "-GJ", 1.0)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"patch circ.*argument 4 \(numSubdivRad\): expected at most 1000000"):
+        ops.patch("circ", 1, 4, 2**31 - 1, 0.0, 0.0, 0.1, 0.3)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"patch rect.*argument 3 \(numSubdivY\): expected at most 1000000"):
+        ops.patch("rect", 1, 2**31 - 1, 1, -1.0, -1.0, 1.0, 1.0)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"patch quad.*argument 4 \(numSubdivJK\).*1000 x 1001 = 1001000"):
+        ops.patch("quad", 1, 1000, 1001, -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"layer straight.*numFiber.*at most 1000000"):
+        ops.layer("straight", 1, 2**31 - 1, 0.01, 0.0, -1.0, 0.0, 1.0)
+
+
 @pytest.mark.parametrize("element", ["forceBeamColumn", "dispBeamColumn"])
 def test_elastic_beam_columns_match_elastic_beam_under_corotational_large_displacement(ops, element):
     """With an elastic section the basic stiffness of both elements equals

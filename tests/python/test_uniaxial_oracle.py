@@ -95,7 +95,7 @@ CASES = _cases()
 def oracle_results():
     spec = [[list(mat), strains] for mat, strains in CASES.values()]
     r = subprocess.run([ORACLE, "-c", _ORACLE_SCRIPT], input=json.dumps(spec), capture_output=True, text=True,
-                       timeout=600)
+                       timeout=600, env=compare.oracle_env())
     assert r.returncode == 0, r.stderr[-2000:]
     results = json.loads(r.stdout.split("RESULT", 1)[1])
     return dict(zip(CASES.keys(), results))

@@ -98,6 +98,17 @@ def tolerance_for(key):
     return 1e-8
 
 
+# The sanitizer run (`make sanitize`) preloads the ASan/UBSan runtimes into every
+# child. OpenSeesPy is not our code and not instrumented: its own allocator
+# habits would be reported as ours, so the oracle runs without them.
+SANITIZER_VARIABLES = ("LD_PRELOAD", "ASAN_OPTIONS", "UBSAN_OPTIONS", "PYTHONMALLOC")
+
+
+def oracle_env():
+    """This process's environment without the sanitizer runtime, for the OpenSeesPy interpreter."""
+    return {k: v for k, v in os.environ.items() if k not in SANITIZER_VARIABLES}
+
+
 def find_oracle_python():
     """A Python where `import openseespy.opensees` works, or None."""
     candidates = [os.environ.get("BEAMSOLID_ORACLE_PYTHON"), DEFAULT_ORACLE_PYTHON]
@@ -105,7 +116,8 @@ def find_oracle_python():
         if not python or not os.path.exists(python):
             continue
         try:
-            probe = subprocess.run([python, "-c", "import openseespy.opensees"], capture_output=True, timeout=120)
+            probe = subprocess.run([python, "-c", "import openseespy.opensees"], capture_output=True, timeout=120,
+                                   env=oracle_env())
         except (OSError, subprocess.TimeoutExpired):
             continue
         if probe.returncode == 0:
@@ -119,7 +131,7 @@ def run_opensees(python, names, workdir):
     os.makedirs(workdir, exist_ok=True)
     proc = subprocess.run(
         [python, os.path.join(HERE, "oracle_runner.py"), os.path.join(workdir, "opensees"), output, *names],
-        capture_output=True, text=True, timeout=900,
+        capture_output=True, text=True, timeout=900, env=oracle_env(),
     )
     try:
         with open(output) as f:
