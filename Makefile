@@ -74,6 +74,8 @@ SAN_PYTHON_ENV = LD_PRELOAD="$(SAN_PRELOAD)" PYTHONMALLOC=malloc \
 # fresh virtual environment, so no sanitized code runs in it, and it takes minutes.
 SAN_PYTEST_ARGS ?= tests/python --ignore=tests/python/test_plugin_install.py
 
+# -O1 -g and no -DNDEBUG: readable stacks, and assertions (Eigen's index checks
+# among them) stay on.
 $(SAN_BUILD)/CMakeCache.txt: | venv
 	$(VENV)/bin/cmake -S . -B $(SAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_COMPILER=$(SAN_CXX) -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
@@ -87,10 +89,10 @@ sanitize-build: venv $(SAN_BUILD)/CMakeCache.txt
 sanitize: sanitize-build
 	ASAN_OPTIONS=detect_leaks=1:$(SAN_ASAN_COMMON) UBSAN_OPTIONS=$(SAN_UBSAN) \
 	  $(VENV)/bin/ctest --test-dir $(SAN_BUILD) --output-on-failure -j $(JOBS)
+	rm -rf $(SAN_REPORTS) && mkdir -p $(SAN_REPORTS)
 	@# the run below must import the sanitized build, not python/beamsolid
 	$(SAN_PYTHON_ENV) $(PY) -c "import beamsolid._beamsolid as b, sys; \
 	  sys.exit(0 if b.__file__.startswith('$(abspath $(SAN_BUILD))/') else 'imported ' + b.__file__)"
-	rm -rf $(SAN_REPORTS) && mkdir -p $(SAN_REPORTS)
 	$(SAN_PYTHON_ENV) $(PY) -m pytest -q $(SAN_PYTEST_ARGS); status=$$?; \
 	  if [ -n "$$(ls -A $(SAN_REPORTS))" ]; then cat $(SAN_REPORTS)/*; \
 	    echo "make sanitize: sanitizer reports above (files in $(SAN_REPORTS))"; exit 1; fi; \

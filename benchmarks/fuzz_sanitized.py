@@ -27,6 +27,21 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 FUZZER = ROOT / "tools" / "fuzz_commands.py"
 RESULTS = ROOT / "benchmarks" / "results"
+# What earlier runs of this benchmark found, each fixed at its cause (git log names the commits).
+FIXED_FINDINGS = [
+    "UBSan signed-integer-overflow: `equalDOF(r, c, -2**31)` computed dof - 1 before any check "
+    "(bindings/InterpreterModel.cpp; also `remove('sp', node, dof)`): a dof < 1 is now an OpenSeesError.",
+    "ASan out-of-memory abort: `patch('circ', 1, 4, 2**31 - 1, ...)` asked for 200 GB of fibers "
+    "(bindings/InterpreterSections.cpp): at most a million fibers per patch or layer, an OpenSeesError.",
+    "Abort (std::terminate): an EnvelopeNode recorder on /dev/null failed to rewrite its file at wipe(), "
+    "which raised half done, and the Domain destructor then threw the same error at exit (core/Domain.cpp, "
+    "bindings/InterpreterModel.cpp, core/RecorderOutput.cpp): destructors report instead of throwing, "
+    "removeRecorders closes every recorder before raising, wipe() finishes first, only regular files are "
+    "cut back.",
+    "ASan heap-buffer-overflow: a mass on a node constrained by rigidLink('beam') with no element at "
+    "either node made AnalysisModel::assembleMass write at pattern position -1 (analysis/DofMap.cpp): "
+    "the pattern now couples the equations of every dof tied to several.",
+]
 SANITIZER_MARKERS = ("ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "runtime error:", "SUMMARY: UndefinedBehavior")
 
 
@@ -154,6 +169,7 @@ def main():
                      "sanitizer_reports": sum(1 for d in died if d["died"] == "sanitizer report"),
                      "other_exceptions": total["findings"]},
         "finding_details": died + exceptions,
+        "fixed_in_earlier_runs": FIXED_FINDINGS,
         "wall_seconds": round(wall, 1),
         "child_seconds": round(sum(s for _, _, s in results), 1),
         "reproduce": "make sanitize-build && .venv/bin/python benchmarks/fuzz_sanitized.py "
@@ -198,6 +214,7 @@ def main():
         for d in summary["finding_details"]:
             md.append(f"- `{json.dumps({k: v for k, v in d.items() if k != 'stderr'})}`")
         md.append("")
+    md += ["## Findings of earlier runs, fixed", ""] + [f"- {f}" for f in FIXED_FINDINGS] + [""]
     md += ["## Reproduce", "", "```sh", summary["reproduce"], "# one seed, every call traced to stderr:",
            summary["reproduce_one_chunk"], "```", ""]
     (out / "fuzz_sanitized.md").write_text("\n".join(md))
