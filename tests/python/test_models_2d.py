@@ -468,3 +468,27 @@ def test_joint_offsets_in_2d(model):
     assert_close(model.nodeDisp(2, 2), P * L**3 / (3 * E_BEAM * I_BEAM), 1e-12)
     model.reactions()
     assert_close(model.nodeReaction(1), [0.0, -P, -P * (L + d)], 1e-12)
+
+
+def test_pvd_recorder_pads_2d_models_to_3d(model, tmp_path):
+    """ParaView wants 3D points: a 2D node's (ux, uy, rz) is written as displacement
+    (ux, uy, 0) and rotation (0, 0, rz); a 2D beam's local end forces (N, Vy, Mz) go to
+    the N, Vy and Mz slots of the 12 localForce components."""
+    meshio = pytest.importorskip("meshio")
+    L, P = 3.0, 5.0
+    cantilever(model, 1, L)
+    model.load(2, 0.0, P, 0.0)
+    name = str(tmp_path / "cantilever")
+    model.recorder("PVD", name, "-precision", 15)
+    static(model)
+    steps = sorted((tmp_path / "cantilever").glob("cantilever_*.vtu"))
+    assert len(steps) == 1
+    grid = meshio.read(str(steps[0]))
+    assert grid.points.tolist() == [[0.0, 0.0, 0.0], [L, 0.0, 0.0]]
+    u = model.nodeDisp(2)
+    assert_close(grid.point_data["displacement"][1], [u[0], u[1], 0.0], 1e-14)
+    assert_close(grid.point_data["rotation"][1], [0.0, 0.0, u[2]], 1e-14)
+    local = model.eleResponse(1, "localForce")
+    expected = np.zeros(12)
+    expected[[0, 1, 5, 6, 7, 11]] = local
+    assert_close(np.concatenate(grid.cell_data["localForce"])[0], expected, 1e-14)
