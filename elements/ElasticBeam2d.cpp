@@ -5,6 +5,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "elements/BeamMass.h"
+#include "sections/ElasticSection3d.h"
 
 namespace beamsolid {
 
@@ -162,20 +163,31 @@ std::unique_ptr<Element> ElasticBeam2d::build(CommandArgs& args, Domain& domain,
     ++numbers;
   if (numbers == 7)
     args.fail("the 3D form (A, E, G, J, Iy, Iz, transfTag) needs a 3D model (-ndm 3); in 2D give A, E, Iz, transfTag");
-  if (numbers == 2)
-    args.fail("the section form (secTag, transfTag) is not supported yet; give A, E, Iz, transfTag");
-  if (numbers != 4)
-    args.fail("expected A, E, Iz, transfTag (4 numbers) after the nodes in a 2D model, got " +
-              std::to_string(numbers));
+  if (numbers != 4 && numbers != 2)
+    args.fail("expected A, E, Iz, transfTag (4 numbers) or secTag, transfTag (2) after the nodes in a 2D model, "
+              "got " + std::to_string(numbers));
   Properties p;
-  struct Positive {
-    double* value;
-    const char* name;
-  };
-  for (const Positive& item : {Positive{&p.A, "A"}, Positive{&p.E, "E"}, Positive{&p.Iz, "Iz"}}) {
-    const std::size_t at = args.position();
-    *item.value = args.nextDouble(item.name);
-    if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+  if (numbers == 2) {
+    // The section form: E, A, Iz of an Elastic section.
+    const int secTag = args.nextInt("secTag");
+    const SectionForceDeformation& section = domain.sections.get(secTag, args.context());
+    const auto* elastic = dynamic_cast<const ElasticSection3d*>(&section);
+    if (!elastic)
+      args.fail("section " + std::to_string(secTag) + " is a " + section.className() +
+                " section; the 2D elasticBeamColumn takes an Elastic section (E, A, Iz)");
+    p.E = elastic->properties().E;
+    p.A = elastic->properties().A;
+    p.Iz = elastic->properties().Iz;
+  } else {
+    struct Positive {
+      double* value;
+      const char* name;
+    };
+    for (const Positive& item : {Positive{&p.A, "A"}, Positive{&p.E, "E"}, Positive{&p.Iz, "Iz"}}) {
+      const std::size_t at = args.position();
+      *item.value = args.nextDouble(item.name);
+      if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+    }
   }
   const int transfTag = args.nextInt("transfTag");
   while (!args.done()) {

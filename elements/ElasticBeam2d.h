@@ -13,6 +13,7 @@ class CommandArgs;
 // model with -ndm 2, nodes with ndf 3):
 //   element('elasticBeamColumn', tag, iNode, jNode, A, E, Iz, transfTag,
 //           <'-mass', massPerLength>, <'-cMass'>, <'-release', code>)
+// or with secTag (an Elastic section: E, A, Iz) in place of A, E, Iz.
 // Basic stiffness EA/L and 4EI/L, 2EI/L in the basic system of CrdTransf2d;
 // '-release' 1 (I), 2 (J) or 3 (both) condenses the end moments out (a
 // hinge). Element loads enter as fixed-end forces, as in ElasticBeam3d.

@@ -290,6 +290,27 @@ def test_2d_point_load_and_axial_uniform_load_on_a_cantilever(model):
     assert_close(model.nodeDisp(2, 1), wx * L**2 / (2 * E_BEAM * A_BEAM), 1e-12)
 
 
+def test_section_form_takes_e_a_iz_of_an_elastic_section(model):
+    L, P = 4.0, 15.0
+    model.model("basic", "-ndm", 2)
+    model.node(1, 0.0, 0.0)
+    model.node(2, L, 0.0)
+    model.fix(1, 1, 1, 1)
+    model.geomTransf("Linear", 1)
+    model.section("Elastic", 3, E_BEAM, A_BEAM, I_BEAM)
+    model.element("elasticBeamColumn", 1, 1, 2, 3, 1)
+    model.timeSeries("Linear", 1)
+    model.pattern("Plain", 1, 1)
+    model.load(2, P, P, 0.0)
+    static(model)
+    assert_close(model.nodeDisp(2)[:2], [P * L / (E_BEAM * A_BEAM), P * L**3 / (3 * E_BEAM * I_BEAM)], 1e-12)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"section Elastic 4: expected E, A, Iz \(3 numbers\)"):
+        model.section("Elastic", 4, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0)
+    model.section("Fiber", 5, "-GJ", 1.0)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"elasticBeamColumn 2: section 5 is a .* section; .*Elastic"):
+        model.element("elasticBeamColumn", 2, 1, 2, 5, 1)
+
+
 def test_moment_release_makes_a_propped_cantilever(model):
     """-release 2 (hinge at J) on a beam fixed at I and propped at J: under w the
     prop takes 3wL/8 and the fixed end wL^2/8."""

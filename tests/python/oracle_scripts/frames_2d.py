@@ -67,7 +67,8 @@ def _portal(ops, out, transf):
     ops.geomTransf("Linear", 2)
     E = 200.0e6
     ops.element("elasticBeamColumn", 1, 1, 3, 0.02, E, 3.0e-4, 1)
-    ops.element("elasticBeamColumn", 2, 2, 4, 0.02, E, 3.0e-4, 1)
+    ops.section("Elastic", 1, E, 0.02, 3.0e-4)  # the section form, same properties
+    ops.element("elasticBeamColumn", 2, 2, 4, 1, 1)
     ops.element("elasticBeamColumn", 3, 3, 5, 0.015, E, 5.0e-4, 2)
     ops.element("elasticBeamColumn", 4, 5, 4, 0.015, E, 5.0e-4, 2)
     ops.timeSeries("Linear", 1)
