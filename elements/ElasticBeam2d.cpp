@@ -135,12 +135,19 @@ Response ElasticBeam2d::setResponse(const std::vector<std::string>& args) {
               const Matrix3 rowMajor = kb_.transpose();
               return Vector(Eigen::Map<const Vector>(rowMajor.data(), 9));
             }};
-  if (what == "xaxis" || what == "xlocal")
-    return {{"x_X", "x_Y", "x_Z"}, [this] {
-              Vector x = Vector::Zero(3);
-              x.head<2>() = transf_->axis();
-              return x;
-            }};
+  // Local axes in global coordinates: x along the chord, y = Z x x, z = Z.
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string name(1, "xyz"[axis]);
+    if (what == name + "axis" || what == name + "local")
+      return {{name + "_X", name + "_Y", name + "_Z"}, [this, axis] {
+                const Eigen::Vector2d x = transf_->axis();
+                Vector v = Vector::Zero(3);
+                if (axis == 0) v << x.x(), x.y(), 0.0;
+                else if (axis == 1) v << -x.y(), x.x(), 0.0;
+                else v[2] = 1.0;
+                return v;
+              }};
+  }
   return {};
 }
 

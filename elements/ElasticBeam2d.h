@@ -51,7 +51,8 @@ class ElasticBeam2d : public Element {
   bool acceptsLoad(ElementLoad::Type type) const override;
 
   // 'force'/'globalForce' (6), 'localForce' (6), 'basicForce' (3),
-  // 'basicDeformation' (3), 'basicStiffness' (9, row by row), 'xaxis' (3).
+  // 'basicDeformation' (3), 'basicStiffness' (9, row by row), 'xaxis',
+  // 'yaxis', 'zaxis' (3 each; also 'xlocal', ...).
   Response setResponse(const std::vector<std::string>& args) override;
 
   void print(std::ostream& os) const override;

@@ -149,7 +149,10 @@ Response Truss::setResponse(const std::vector<std::string>& args) {
     if (largeDisplacement()) return {{"N"}, [this] { return Vector::Constant(1, axialForce()); }};
     const int ndf = nodes()[0]->ndf();
     std::vector<std::string> names;
-    const char* const labels[6] = {"N_", "Vy_", "Vz_", "T_", "My_", "Mz_"};
+    // A 2D node's third dof is the rotation about z.
+    const char* const labels3d[6] = {"N_", "Vy_", "Vz_", "T_", "My_", "Mz_"};
+    const char* const labels2d[3] = {"N_", "Vy_", "Mz_"};
+    const char* const* labels = dim_ == 2 ? labels2d : labels3d;
     for (int a = 1; a <= 2; ++a)
       for (int k = 0; k < ndf; ++k) names.push_back(labels[k] + std::to_string(a));
     return {names, [this, ndf] {

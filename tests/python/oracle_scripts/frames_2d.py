@@ -12,6 +12,26 @@ eigenvalues of a column with lumped and consistent (-cMass) mass.
 """
 
 
+# Every response name scripts use, queried on the 2D truss and beam.
+NAMES = (
+    "force", "forces", "globalForce", "globalForces", "localForce", "localForces",
+    "basicForce", "basicForces", "deformation", "deformations", "basicDeformation",
+    "basicDeformations", "axialForce", "stress", "stresses", "strain", "strains",
+    "basicStiffness", "xaxis", "yaxis", "zaxis",
+)
+
+
+def _query(ops, tag, *args):
+    """A name an implementation does not know: "[]" (OpenSeesPy's empty list) or "error"."""
+    try:
+        value = ops.eleResponse(tag, *args)
+    except Exception:  # noqa: BLE001 - the error behaviour is what is compared
+        return "error"
+    if isinstance(value, (list, tuple)):
+        return list(value) if value else "[]"
+    return repr(value)
+
+
 def _truss(ops, out):
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 2)
@@ -48,6 +68,8 @@ def _truss(ops, out):
         out["truss." + what] = [ops.eleResponse(e, what) for e in range(1, 8)]
     out["truss.stress"] = [ops.eleResponse(e, "material", 1, "stress") for e in range(1, 8)]
     out["truss.strain"] = [ops.eleResponse(e, "material", "strain") for e in range(1, 8)]
+    for name in NAMES:
+        out["truss.names." + name] = _query(ops, 3, name)
     ops.wipe()
 
 
@@ -94,6 +116,8 @@ def _portal(ops, out, transf):
     ops.integrator("LoadControl", 0.5)
     out[key + "lateral.code"] = ops.analyze(2)
     _snapshot(ops, out, key + "lateral.")
+    for name in NAMES:
+        out[key + "names." + name] = _query(ops, 1, name)
     ops.wipe()
 
 
@@ -105,6 +129,42 @@ def _snapshot(ops, out, key):
     for what in ("force", "globalForce", "localForce", "basicForce", "basicForces", "basicDeformation",
                  "basicStiffness", "xaxis"):
         out[key + what] = [ops.eleResponse(e, what) for e in range(1, 5)]
+
+
+def _corot_truss(ops, out):
+    """A shallow two-bar (von Mises) truss of corotTruss bars pushed down at the apex,
+    on ndf-2 and ndf-3 nodes."""
+    for ndf in (2, 3):
+        key = "corot%d." % ndf
+        ops.wipe()
+        ops.model("basic", "-ndm", 2, "-ndf", ndf)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 5.0, 1.0)
+        ops.node(3, 10.0, 0.0)
+        ops.fix(1, *([1] * ndf))
+        ops.fix(3, *([1] * ndf))
+        if ndf == 3:
+            ops.fix(2, 0, 0, 1)
+        ops.uniaxialMaterial("Elastic", 1, 1.0e4)
+        ops.element("corotTruss", 1, 1, 2, 1.0, 1)
+        ops.element("corotTruss", 2, 2, 3, 1.2, 1)
+        ops.timeSeries("Linear", 1)
+        ops.pattern("Plain", 1, 1)
+        ops.load(2, 2.0, -20.0, *([0.0] * (ndf - 2)))
+        ops.system("UmfPack")
+        ops.constraints("Plain")
+        ops.numberer("Plain")
+        ops.test("NormDispIncr", 1e-12, 25)
+        ops.algorithm("Newton")
+        ops.integrator("LoadControl", 0.25)
+        ops.analysis("Static")
+        out[key + "codes"] = [ops.analyze(1) for _ in range(4)]
+        out[key + "disp"] = ops.nodeDisp(2)
+        for what in ("axialForce", "force", "basicDeformation"):
+            out[key + what] = [ops.eleResponse(e, what) for e in (1, 2)]
+        # OpenSeesPy's 2D corotTruss has no 'localForce' ([]); BeamSolid gives N.
+        out[key + "localForce"] = _query(ops, 1, "localForce")
+    ops.wipe()
 
 
 def _release_and_mass(ops, out):
@@ -156,6 +216,7 @@ def run(ops):
     _truss(ops, out)
     for transf in ("Linear", "PDelta"):
         _portal(ops, out, transf)
+    _corot_truss(ops, out)
     _release_and_mass(ops, out)
     # wipe() closed the recorders.
     for name in ("truss2d.out", "portal_Linear.out", "portal_PDelta.out"):
