@@ -368,14 +368,19 @@ void PVDRecorder::updateTopology(Domain& domain) {
         cell.responses = {element->setResponse({"localForce"})};
         lines.push_back(std::move(cell));
         break;
-      case CellKind::Contact:
+      case CellKind::Contact: {
         if (vertexOf(*element) >= nodes.size()) continue;
         cell.vtkType = kVtkVertex;
+        // The friction on the soil node where the beam contacts name it apart
+        // (soilFrictionForce); a node-to-node contact has one friction force.
+        Response friction = element->setResponse({"soilfrictionforce"});
+        if (!friction) friction = element->setResponse({"frictionforce"});
         cell.responses = {element->setResponse({"status"}), element->setResponse({"gap"}),
-                          element->setResponse({"forcescalar"}), element->setResponse({"soilfrictionforce"}),
+                          element->setResponse({"forcescalar"}), std::move(friction),
                           element->setResponse({"normal"})};
         contacts.push_back(std::move(cell));
         break;
+      }
     }
   }
   for (auto* group : {&solids, &lines, &contacts})
