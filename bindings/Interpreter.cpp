@@ -110,7 +110,7 @@ Interpreter::Result Interpreter::call(const std::string& name, std::vector<Comma
 }
 
 void Interpreter::requireModel(CommandArgs& a) const {
-  if (ndm_ == 0) a.fail("no model: call model('basic', '-ndm', 3, '-ndf', ndf) first");
+  if (domain_->ndm() == 0) a.fail("no model: call model('basic', '-ndm', ndm, '-ndf', ndf) first");
 }
 
 LoadPattern& Interpreter::currentPattern(CommandArgs& a) const {

@@ -125,8 +125,6 @@ class Interpreter {
   void ensureAnalysisDefaults();
 
   std::unique_ptr<Domain> domain_;
-  int ndm_ = 0;
-  int ndf_ = 0;
   int currentPatternTag_ = -1;
   // patch, layer and fiber add to the most recent section.
   int currentSectionTag_ = -1;

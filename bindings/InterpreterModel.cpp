@@ -11,6 +11,28 @@ namespace beamsolid {
 
 using Result = Interpreter::Result;
 
+namespace {
+
+// The ndf values nodes may have in a space of ndm dimensions: translations
+// only, or with rotations (1D has no rotation).
+bool ndfAllowed(int ndm, int ndf) {
+  switch (ndm) {
+    case 1: return ndf == 1;
+    case 2: return ndf == 2 || ndf == 3;
+    default: return ndf == 3 || ndf == 6;
+  }
+}
+
+std::string allowedNdfText(int ndm) {
+  switch (ndm) {
+    case 1: return "1";
+    case 2: return "2 or 3";
+    default: return "3 or 6";
+  }
+}
+
+}  // namespace
+
 Result Interpreter::wipe(CommandArgs& a) {
   a.expectEnd();
   // A recorder that cannot write its file still leaves the model wiped; its
@@ -25,7 +47,6 @@ Result Interpreter::wipe(CommandArgs& a) {
   components_ = AnalysisComponents{};
   haveAnalysis_ = false;
   domain_ = std::make_unique<Domain>();
-  ndm_ = ndf_ = 0;
   currentPatternTag_ = -1;
   currentSectionTag_ = -1;
   eigenvalues_.clear();
@@ -45,11 +66,11 @@ Result Interpreter::model(CommandArgs& a) {
     else if (opt == "-ndf") ndf = a.nextInt("ndf");
     else a.fail("unknown option '" + opt + "' (expected -ndm or -ndf)");
   }
-  if (ndm != 3) a.fail("-ndm " + std::to_string(ndm) + " is not supported: BeamSolid models are 3D (-ndm 3)");
-  if (ndf == 0) ndf = 6;
-  if (ndf != 3 && ndf != 6) a.fail("-ndf must be 3 or 6 in 3D, got " + std::to_string(ndf));
-  ndm_ = ndm;
-  ndf_ = ndf;
+  if (ndm < 1 || ndm > 3) a.fail("-ndm must be 1, 2 or 3, got " + std::to_string(ndm));
+  if (ndf == 0) ndf = ndm * (ndm + 1) / 2;  // OpenSees' default: 1, 3, 6
+  if (!ndfAllowed(ndm, ndf))
+    a.fail("-ndf must be " + allowedNdfText(ndm) + " in " + std::to_string(ndm) + "D, got " + std::to_string(ndf));
+  domain_->setModelSpace(ndm, ndf);
   return {};
 }
 
@@ -57,15 +78,34 @@ Result Interpreter::node(CommandArgs& a) {
   requireModel(a);
   const int tag = a.nextInt("nodeTag");
   a.setContext("node " + std::to_string(tag));
-  Vector3 x;
-  for (int i = 0; i < 3; ++i) x[i] = a.nextDouble(i == 0 ? "x" : i == 1 ? "y" : "z");
-  int ndf = ndf_;
+  const int ndm = domain_->ndm();
+  // Exactly ndm coordinates; the rest of the 3 stay zero.
+  Vector3 x = Vector3::Zero();
+  int given = 0;
+  while (a.nextIsNumber()) {
+    const double value = a.nextDouble("coordinate");
+    if (given < 3) x[given] = value;
+    ++given;
+  }
+  if (given < ndm && !a.done()) {
+    // Something that is not a number where a coordinate belongs (not an
+    // option): say which argument and what it is.
+    const auto s = a.peekString();
+    if (!s || s->empty() || (*s)[0] != '-') a.nextDouble(given == 0 ? "x" : given == 1 ? "y" : "z");
+  }
+  if (given != ndm) {
+    static const char* const names[3] = {"x", "x, y", "x, y, z"};
+    a.fail("expected " + std::to_string(ndm) + " coordinate" + (ndm > 1 ? "s" : "") + " (" + names[ndm - 1] +
+           ") in a model with -ndm " + std::to_string(ndm) + ", got " + std::to_string(given));
+  }
+  int ndf = domain_->ndf();
   Vector mass, disp;
   while (!a.done()) {
     const std::string opt = a.nextString("option");
     if (opt == "-ndf") {
       ndf = a.nextInt("ndf");
-      if (ndf != 3 && ndf != 6) a.fail("-ndf must be 3 or 6, got " + std::to_string(ndf));
+      if (!ndfAllowed(ndm, ndf))
+        a.fail("-ndf must be " + allowedNdfText(ndm) + " in " + std::to_string(ndm) + "D, got " + std::to_string(ndf));
     } else if (opt == "-mass") {
       auto m = a.nextDoubles("mass", 1);
       mass = Eigen::Map<Vector>(m.data(), m.size());
@@ -76,7 +116,7 @@ Result Interpreter::node(CommandArgs& a) {
       a.fail("unknown option '" + opt + "' (expected -ndf, -mass or -disp)");
     }
   }
-  auto n = std::make_unique<Node>(tag, ndf, x);
+  auto n = std::make_unique<Node>(tag, ndf, x, ndm);
   if (mass.size()) {
     if (mass.size() != ndf) a.fail("-mass needs " + std::to_string(ndf) + " values, got " + std::to_string(mass.size()));
     n->setMass(mass);
@@ -111,6 +151,9 @@ Result Interpreter::fixY(CommandArgs& a) { return fixCoordinate(a, 1); }
 Result Interpreter::fixZ(CommandArgs& a) { return fixCoordinate(a, 2); }
 
 Result Interpreter::fixCoordinate(CommandArgs& a, int axis) {
+  if (axis >= domain_->spaceDim())
+    a.fail(std::string("fix") + "XYZ"[axis] + " needs a model with -ndm " + std::to_string(axis + 1) +
+           " or more (this one has -ndm " + std::to_string(domain_->spaceDim()) + ")");
   const double coordinate = a.nextDouble("coordinate");
   std::vector<int> flags;
   double tol = 1e-10;
@@ -167,6 +210,7 @@ Result Interpreter::rigidLink(CommandArgs& a) {
   a.setContext("rigidLink " + type + " " + std::to_string(r) + " " + std::to_string(c));
   a.expectEnd();
   if (type != "beam" && type != "bar") a.fail("type must be 'beam' or 'bar', got '" + type + "'");
+  if (domain_->spaceDim() != 3) a.fail("rigidLink is implemented for 3D models only (-ndm 3)");
   const Node& rn = domain_->node(r, a.context());
   const Node& cn = domain_->node(c, a.context());
   MPConstraint mp;
@@ -321,7 +365,21 @@ Result Interpreter::eleLoad(CommandArgs& a) {
     } else if (opt == "-type") {
       const std::string type = a.nextString("load type");
       haveType = true;
-      if (type == "-beamUniform" || type == "beamUniform") {
+      // In 2D OpenSees takes (Wy, <Wx>) and (Py, xL, <Px>); they are kept in
+      // ElementLoad's 3D layout with Wz = Pz = 0.
+      const bool planar = domain_->spaceDim() == 2;
+      if (planar && (type == "-beamUniform" || type == "beamUniform")) {
+        load.type = ElementLoad::Type::BeamUniform;
+        const auto w = a.nextDoubles("Wy, <Wx>", 1);
+        if (w.size() > 2) a.fail("-beamUniform takes Wy and optionally Wx in a 2D model");
+        load.values = {w[0], 0.0, w.size() > 1 ? w[1] : 0.0};
+      } else if (planar && (type == "-beamPoint" || type == "beamPoint")) {
+        load.type = ElementLoad::Type::BeamPoint;
+        const auto w = a.nextDoubles("Py, xL, <Px>", 2);
+        if (w.size() > 3) a.fail("-beamPoint takes Py, xL and optionally Px in a 2D model");
+        if (w[1] < 0.0 || w[1] > 1.0) a.fail("-beamPoint xL must lie in [0, 1]");
+        load.values = {w[0], 0.0, w[1], w.size() > 2 ? w[2] : 0.0};
+      } else if (type == "-beamUniform" || type == "beamUniform") {
         load.type = ElementLoad::Type::BeamUniform;
         load.values = a.nextDoubles("Wy, Wz, <Wx>", 2);
         if (load.values.size() > 3) a.fail("-beamUniform takes Wy, Wz and optionally Wx");

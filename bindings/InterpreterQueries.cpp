@@ -39,10 +39,11 @@ Result Interpreter::nodeCoord(CommandArgs& a) {
   const int tag = a.nextInt("nodeTag");
   a.setContext("nodeCoord " + std::to_string(tag));
   const Node& n = domain_->node(tag, a.context());
-  if (a.done()) return toList(n.crd());
+  if (a.done()) return toList(n.coordinates());
   const int dim = a.nextInt("dim");
   a.expectEnd();
-  if (dim < 1 || dim > 3) a.fail("dim " + std::to_string(dim) + " is out of range 1..3");
+  if (dim < 1 || dim > n.ndm())
+    a.fail("dim " + std::to_string(dim) + " is out of range 1.." + std::to_string(n.ndm()));
   return n.crd()[dim - 1];
 }
 
@@ -178,12 +179,12 @@ Result Interpreter::printModel(CommandArgs& a) {
   auto wantEle = [&](int t) { return !onlyNodes && (eleTags.empty() || std::find(eleTags.begin(), eleTags.end(), t) != eleTags.end()); };
   if (json) {
     os << "{\"StructuralAnalysisModel\": {\n  \"properties\": {\"time\": " << domain_->currentTime()
-       << ", \"ndm\": " << ndm_ << "},\n  \"geometry\": {\n    \"nodes\": [";
+       << ", \"ndm\": " << domain_->ndm() << "},\n  \"geometry\": {\n    \"nodes\": [";
     bool first = true;
     for (const auto& [tag, n] : domain_->nodes()) {
       if (!wantNode(tag)) continue;
       os << (first ? "\n      " : ",\n      ") << "{\"name\": " << tag << ", \"ndf\": " << n->ndf() << ", \"crd\": ";
-      printVectorJSON(os, n->crd());
+      printVectorJSON(os, n->coordinates());
       os << ", \"disp\": ";
       printVectorJSON(os, n->trialDisp());
       os << '}';
@@ -216,8 +217,8 @@ Result Interpreter::printModel(CommandArgs& a) {
        << domain_->mps().size() << " multi-point constraints, " << domain_->patterns().size() << " load patterns\n";
     for (const auto& [tag, n] : domain_->nodes()) {
       if (!wantNode(tag)) continue;
-      os << "Node " << tag << ": ndf " << n->ndf() << ", coordinates " << n->crd().transpose() << ", displacements "
-         << n->trialDisp().transpose() << '\n';
+      os << "Node " << tag << ": ndf " << n->ndf() << ", coordinates " << n->coordinates().transpose()
+         << ", displacements " << n->trialDisp().transpose() << '\n';
     }
     for (const auto& [tag, e] : domain_->elements())
       if (wantEle(tag)) e->print(os);

@@ -67,6 +67,10 @@ void Domain::addElement(std::unique_ptr<Element> element, const std::string& con
   const int tag = element->tag();
   if (elements_.count(tag))
     throw OpenSeesError(context + ": element " + std::to_string(tag) + " already exists");
+  if (!element->supportsSpace(spaceDim()))
+    throw OpenSeesError(context + ": element type " + element->className() + " does not work in a " +
+                        std::to_string(spaceDim()) + "D model (-ndm " + std::to_string(spaceDim()) + ")" +
+                        (spaceDim() == 3 ? std::string() : std::string(": it is a 3D element (-ndm 3)")));
   element->connect(*this);
   // (connect() may have refreshed the usage cache; this element is not in it yet.)
   const bool usageCurrent = nodeUsageStamp_ == modelStamp_;

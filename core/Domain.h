@@ -30,6 +30,17 @@ class Domain {
   Domain();
   ~Domain();
 
+  // --- model space --------------------------------------------------------
+  // model('basic', '-ndm', ndm, '-ndf', ndf). 0 until a model command: code
+  // that builds a Domain directly gets 3D (spaceDim() is then 3).
+  int ndm() const { return ndm_; }
+  int ndf() const { return ndf_; }
+  int spaceDim() const { return ndm_ == 0 ? 3 : ndm_; }
+  void setModelSpace(int ndm, int ndf) {
+    ndm_ = ndm;
+    ndf_ = ndf;
+  }
+
   // --- nodes and elements -------------------------------------------------
   void addNode(std::unique_ptr<Node> node, const std::string& context);
   Node* findNode(int tag) const;
@@ -37,7 +48,8 @@ class Domain {
   const std::map<int, std::unique_ptr<Node>>& nodes() const { return nodes_; }
   void removeNode(int tag, const std::string& context);
 
-  // Connects the element (resolving its nodes) and adds it.
+  // Connects the element (resolving its nodes) and adds it; an element that
+  // does not work in the model's space (Element::supportsSpace) is an error.
   void addElement(std::unique_ptr<Element> element, const std::string& context);
   Element* findElement(int tag) const;
   Element& element(int tag, const std::string& context) const;
@@ -150,6 +162,8 @@ class Domain {
   bool needsGeneralSolver() const;
 
  private:
+  int ndm_ = 0;
+  int ndf_ = 0;
   std::map<int, std::unique_ptr<Node>> nodes_;
   std::map<int, std::unique_ptr<Element>> elements_;
   std::vector<SPConstraint> sps_;

@@ -2,9 +2,10 @@
 
 namespace beamsolid {
 
-Node::Node(int tag, int ndf, const Vector3& coordinates)
+Node::Node(int tag, int ndf, const Vector3& coordinates, int ndm)
     : tag_(tag),
       ndf_(ndf),
+      ndm_(ndm),
       crd_(coordinates),
       trialDisp_(Vector::Zero(ndf)),
       committedDisp_(Vector::Zero(ndf)),

@@ -7,13 +7,18 @@ namespace beamsolid {
 
 // A node: coordinates, ndf dofs with committed/trial response, lumped mass,
 // the applied (unbalanced) load of the current time, and the reaction.
+// Coordinates are stored padded to 3 with zeros, so geometry code works in
+// every space; ndm says how many the user gave (and gets back).
 class Node {
  public:
-  Node(int tag, int ndf, const Vector3& coordinates);
+  Node(int tag, int ndf, const Vector3& coordinates, int ndm = 3);
 
   int tag() const { return tag_; }
   int ndf() const { return ndf_; }
+  int ndm() const { return ndm_; }
   const Vector3& crd() const { return crd_; }
+  // The ndm coordinates the user gave.
+  Vector coordinates() const { return crd_.head(ndm_); }
 
   const Vector& trialDisp() const { return trialDisp_; }
   const Vector& committedDisp() const { return committedDisp_; }
@@ -54,6 +59,7 @@ class Node {
  private:
   int tag_;
   int ndf_;
+  int ndm_;
   Vector3 crd_;
   Vector trialDisp_, committedDisp_;
   Vector trialVel_, committedVel_;

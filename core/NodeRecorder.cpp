@@ -151,7 +151,7 @@ NodeRecorder::NodeRecorder(const Domain& domain, Spec spec, bool envelope) : spe
     // names the node only and puts a time block before each response type.
     RecorderOutput::XmlBlock block{"NodeOutput", {{"nodeTag", std::to_string(tag)}}, {}};
     if (!envelope) {
-      for (int i = 0; i < 3; ++i) {
+      for (int i = 0; i < node.ndm(); ++i) {
         char coord[64];
         std::snprintf(coord, sizeof coord, "%.*g", spec_.output.precision, node.crd()[i]);
         block.attributes.emplace_back("coord" + std::to_string(i + 1), coord);

@@ -91,16 +91,18 @@ void appendTuple(std::string& out, const Tuple& values, int digits) {
   out += '\n';
 }
 
-// The translational part (dofs 1-3) of a nodal vector.
-Vector3 translational(const Vector& v) {
+// The translational part (the first ndm dofs, at most 3) of a vector.
+Vector3 translational(const Vector& v, int ndm = 3) {
   Vector3 out = Vector3::Zero();
-  for (Eigen::Index i = 0; i < std::min<Eigen::Index>(3, v.size()); ++i) out[i] = v[i];
+  for (Eigen::Index i = 0; i < std::min<Eigen::Index>(ndm, v.size()); ++i) out[i] = v[i];
   return out;
 }
 
-// The rotational part (dofs 4-6) of an ndf-6 node's vector, zeros otherwise.
-Vector3 rotational(const Vector& v, int ndf) {
-  if (ndf != 6 || v.size() < 6) return Vector3::Zero();
+// The rotational part of a node's vector: dofs 4-6 of an ndf-6 node; the
+// rotation about Z (dof 3) of a 2D node with ndf 3; zeros otherwise.
+Vector3 rotational(const Vector& v, const Node& n) {
+  if (n.ndm() == 2 && n.ndf() == 3 && v.size() >= 3) return Vector3(0.0, 0.0, v[2]);
+  if (n.ndf() != 6 || v.size() < 6) return Vector3::Zero();
   return v.segment<3>(3);
 }
 
@@ -135,13 +137,21 @@ Eigen::Matrix<double, 6, 1> gaussPointMean(const Response& r) {
 // 2, from a 'localForce' response: a beam's 12 values; a truss' ndf values
 // per end; a corotational truss' axial force N alone (-N at end 1, N at end 2,
 // the truss' layout).
-Eigen::Matrix<double, 12, 1> localEndForces(const Response& r) {
+// In a 2D model an end has at most N, Vy, Mz (ndf 3) or N, Vy (ndf 2).
+Eigen::Matrix<double, 12, 1> localEndForces(const Response& r, bool planar) {
   Eigen::Matrix<double, 12, 1> out = Eigen::Matrix<double, 12, 1>::Zero();
   if (!r) return out;
   const Vector v = r.value();
   if (v.size() == 1) {
     out[0] = -v[0];
     out[6] = v[0];
+  } else if (planar && (v.size() == 4 || v.size() == 6)) {
+    static constexpr int slot[3] = {0, 1, 5};
+    const Eigen::Index perEnd = v.size() / 2;
+    for (Eigen::Index k = 0; k < perEnd; ++k) {
+      out[slot[k]] = v[k];
+      out[6 + slot[k]] = v[perEnd + k];
+    }
   } else if (v.size() % 2 == 0 && v.size() <= 12) {
     const Eigen::Index perEnd = v.size() / 2;
     out.segment(0, perEnd) = v.segment(0, perEnd);
@@ -358,14 +368,19 @@ void PVDRecorder::updateTopology(Domain& domain) {
         cell.responses = {element->setResponse({"localForce"})};
         lines.push_back(std::move(cell));
         break;
-      case CellKind::Contact:
+      case CellKind::Contact: {
         if (vertexOf(*element) >= nodes.size()) continue;
         cell.vtkType = kVtkVertex;
+        // The friction on the soil node where the beam contacts name it apart
+        // (soilFrictionForce); a node-to-node contact has one friction force.
+        Response friction = element->setResponse({"soilfrictionforce"});
+        if (!friction) friction = element->setResponse({"frictionforce"});
         cell.responses = {element->setResponse({"status"}), element->setResponse({"gap"}),
-                          element->setResponse({"forcescalar"}), element->setResponse({"soilfrictionforce"}),
+                          element->setResponse({"forcescalar"}), std::move(friction),
                           element->setResponse({"normal"})};
         contacts.push_back(std::move(cell));
         break;
+      }
     }
   }
   for (auto* group : {&solids, &lines, &contacts})
@@ -422,10 +437,10 @@ void PVDRecorder::writeGrid(Domain& domain, double time, const std::string& path
   }
   closeArray(out);
   openArray(out, "Float64", "displacement", 3);
-  for (const Node* n : points_) appendTuple(out, translational(n->trialDisp()), digits);
+  for (const Node* n : points_) appendTuple(out, translational(n->trialDisp(), n->ndm()), digits);
   closeArray(out);
   openArray(out, "Float64", "rotation", 3);
-  for (const Node* n : points_) appendTuple(out, rotational(n->trialDisp(), n->ndf()), digits);
+  for (const Node* n : points_) appendTuple(out, rotational(n->trialDisp(), *n), digits);
   closeArray(out);
   Vector scratch;
   for (const Spec::Extra& extra : spec_.extras) {
@@ -452,10 +467,10 @@ void PVDRecorder::writeGrid(Domain& domain, double time, const std::string& path
     };
     const auto [translationName, rotationName] = extraNames(extra);
     openArray(out, "Float64", translationName, 3);
-    for (const Node* n : points_) appendTuple(out, translational(value(*n)), digits);
+    for (const Node* n : points_) appendTuple(out, translational(value(*n), n->ndm()), digits);
     closeArray(out);
     openArray(out, "Float64", rotationName, 3);
-    for (const Node* n : points_) appendTuple(out, rotational(value(*n), n->ndf()), digits);
+    for (const Node* n : points_) appendTuple(out, rotational(value(*n), *n), digits);
     closeArray(out);
   }
   out += "      </PointData>\n";
@@ -495,7 +510,8 @@ void PVDRecorder::writeGrid(Domain& domain, double time, const std::string& path
     openArray(out, "Float64", "localForce", 12, names);
     for (const Cell& c : cells_) {
       const bool line = c.kind == CellKind::Beam || c.kind == CellKind::Truss;
-      appendTuple(out, line ? localEndForces(c.responses[0]) : zero12, digits);
+      const bool planar = line && c.element->nodes()[0]->ndm() == 2;
+      appendTuple(out, line ? localEndForces(c.responses[0], planar) : zero12, digits);
     }
     closeArray(out);
   }

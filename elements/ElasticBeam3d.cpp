@@ -1,5 +1,7 @@
 #include "elements/ElasticBeam3d.h"
 
+#include "elements/BeamFixedEndForces.h"
+#include "elements/ElasticBeam2d.h"
 #include "elements/BeamMass.h"
 
 #include "core/Domain.h"
@@ -81,6 +83,20 @@ void ElasticBeam3d::zeroLoad() {
   p0_.setZero();
 }
 
+void ElasticBeam3d::addPlaneLoads(const BeamFixedEndForces& xy, const BeamFixedEndForces& xz) {
+  p0_[0] += xy.axialReactionI + xz.axialReactionI;
+  q0_[0] += xy.basicAxial + xz.basicAxial;
+  p0_[1] += xy.shearI;
+  p0_[7] += xy.shearJ;
+  q0_[1] += xy.momentI;
+  q0_[2] += xy.momentJ;
+  p0_[2] += xz.shearI;
+  p0_[8] += xz.shearJ;
+  // theta_y = -w' flips the x-z plane's moments.
+  q0_[3] -= xz.momentI;
+  q0_[4] -= xz.momentJ;
+}
+
 bool ElasticBeam3d::acceptsLoad(ElementLoad::Type type) const {
   return type == ElementLoad::Type::BeamUniform || type == ElementLoad::Type::BeamPoint;
 }
@@ -93,23 +109,9 @@ void ElasticBeam3d::addLoad(const ElementLoad& load, double factor) {
       if (v.size() < 2 || v.size() > 3)
         throw OpenSeesError(context() + ": -beamUniform needs Wy, Wz and optionally Wx, got " +
                             std::to_string(v.size()) + " value(s)");
-      const double wy = factor * v[0];
-      const double wz = factor * v[1];
       const double wx = v.size() > 2 ? factor * v[2] : 0.0;
-      // Basic system reactions: axial all at I, transverse half at each end.
-      p0_[0] -= wx * L;
-      q0_[0] -= 0.5 * wx * L;
-      p0_[1] -= 0.5 * wy * L;
-      p0_[7] -= 0.5 * wy * L;
-      p0_[2] -= 0.5 * wz * L;
-      p0_[8] -= 0.5 * wz * L;
-      // Fixed-end moments wL^2/12 (theta_y = -w' flips the x-z plane signs).
-      const double mz = wy * L * L / 12.0;
-      const double my = wz * L * L / 12.0;
-      q0_[1] -= mz;
-      q0_[2] += mz;
-      q0_[3] += my;
-      q0_[4] -= my;
+      addPlaneLoads(BeamFixedEndForces::uniform(factor * v[0], wx, L),
+                    BeamFixedEndForces::uniform(factor * v[1], 0.0, L));
       return;
     }
     case ElementLoad::Type::BeamPoint: {
@@ -120,24 +122,9 @@ void ElasticBeam3d::addLoad(const ElementLoad& load, double factor) {
       if (!(xL >= 0.0 && xL <= 1.0))
         throw OpenSeesError(context() + ": -beamPoint xL must lie in [0, 1] (a fraction of the length), got " +
                             std::to_string(xL));
-      const double py = factor * v[0];
-      const double pz = factor * v[1];
       const double px = v.size() > 3 ? factor * v[3] : 0.0;
-      const double a = xL * L;
-      const double b = L - a;
-      p0_[0] -= px;
-      q0_[0] -= px * a / L;
-      p0_[1] -= py * b / L;
-      p0_[7] -= py * a / L;
-      p0_[2] -= pz * b / L;
-      p0_[8] -= pz * a / L;
-      // Fixed-end moments P a b^2 / L^2 and P a^2 b / L^2.
-      const double atI = a * b * b / (L * L);
-      const double atJ = a * a * b / (L * L);
-      q0_[1] -= py * atI;
-      q0_[2] += py * atJ;
-      q0_[3] += pz * atI;
-      q0_[4] -= pz * atJ;
+      addPlaneLoads(BeamFixedEndForces::point(factor * v[0], px, xL, L),
+                    BeamFixedEndForces::point(factor * v[1], 0.0, xL, L));
       return;
     }
     default:
@@ -220,6 +207,9 @@ std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
   args.setContext("element elasticBeamColumn " + std::to_string(tag));
   const int nodeI = args.nextInt("iNode");
   const int nodeJ = args.nextInt("jNode");
+  // One command for both spaces, as in OpenSees: the model says which.
+  if (domain.spaceDim() == 2) return ElasticBeam2d::build(args, domain, tag, nodeI, nodeJ);
+  if (domain.spaceDim() != 3) args.fail("elasticBeamColumn needs a 2D or 3D model (-ndm 2 or 3)");
 
   // The number of numbers up to the first option tells the form apart.
   std::size_t numbers = 0;
@@ -227,7 +217,7 @@ std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
          !std::holds_alternative<std::string>(args.at(args.position() + numbers)))
     ++numbers;
   if (numbers == 4)
-    args.fail("the 2D form (A, E, Iz, transfTag) is not supported: BeamSolid models are 3D; give "
+    args.fail("the 2D form (A, E, Iz, transfTag) needs a 2D model (-ndm 2); in 3D give "
               "A, E, G, J, Iy, Iz, transfTag");
   if (numbers == 2)
     args.fail("the section form (secTag, transfTag) is not supported yet; give A, E, G, J, Iy, Iz, transfTag");

@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
 
+#include "elements/BeamFixedEndForces.h"
 #include "elements/Element.h"
 #include "elements/transforms/CrdTransf.h"
 
@@ -69,6 +70,8 @@ class ElasticBeam3d : public Element {
 
  private:
   void formMass();
+  // Adds the fixed-end forces of loads in the x-y and x-z planes.
+  void addPlaneLoads(const BeamFixedEndForces& xy, const BeamFixedEndForces& xz);
 
   Properties properties_;
   std::unique_ptr<CrdTransf> transf_;

@@ -30,6 +30,9 @@ class Element {
   const std::vector<Node*>& nodes() const { return nodes_; }
   // Sum of the ndf of the element's nodes: the size of its matrices.
   int numDOF() const { return numDOF_; }
+  // Whether the element works in a model of ndm dimensions. Most elements
+  // are 3D only; those that work in 1D/2D say so.
+  virtual bool supportsSpace(int ndm) const { return ndm == 3; }
 
   // Resolves node tags against the domain (clear error for a missing node)
   // and then calls setDomain() for element-specific checks and set-up.

@@ -20,10 +20,19 @@ Truss::Truss(int tag, int iNode, int jNode, double area, const UniaxialMaterial&
       doRayleigh_(doRayleigh) {}
 
 void Truss::setDomain(Domain&) {
-  for (Node* n : nodes())
-    if (n->ndf() != 3 && n->ndf() != 6)
+  dim_ = nodes()[0]->ndm();
+  for (Node* n : nodes()) {
+    if (n->ndm() != dim_)
+      throw OpenSeesError(context() + ": nodes " + std::to_string(nodeTags()[0]) + " and " +
+                          std::to_string(nodeTags()[1]) + " have different numbers of coordinates");
+    // Translations alone, or with the rotations of the space.
+    const int withRotations = dim_ == 1 ? 1 : dim_ == 2 ? 3 : 6;
+    if (n->ndf() != dim_ && n->ndf() != withRotations)
       throw OpenSeesError(context() + ": node " + std::to_string(n->tag()) + " has " + std::to_string(n->ndf()) +
-                          " dofs; a 3D truss needs nodes with ndf 3 or 6");
+                          " dofs; a " + std::to_string(dim_) + "D truss needs nodes with ndf " +
+                          std::to_string(dim_) +
+                          (withRotations != dim_ ? " or " + std::to_string(withRotations) : std::string()));
+  }
   const Vector3 d = nodes()[1]->crd() - nodes()[0]->crd();
   initialLength_ = d.norm();
   if (!(initialLength_ > 0.0))
@@ -41,7 +50,9 @@ void Truss::setDomain(Domain&) {
 }
 
 Vector3 Truss::relative(const Eigen::VectorXd& iValues, const Eigen::VectorXd& jValues) const {
-  return jValues.head<3>() - iValues.head<3>();
+  Vector3 d = Vector3::Zero();
+  d.head(dim_) = jValues.head(dim_) - iValues.head(dim_);
+  return d;
 }
 
 void Truss::update() {
@@ -65,11 +76,12 @@ void Truss::update() {
 }
 
 void Truss::formStiffness(const Matrix3& k) {
+  const auto kt = k.topLeftCorner(dim_, dim_);
   stiffness_.setZero();
-  stiffness_.block<3, 3>(0, 0) = k;
-  stiffness_.block<3, 3>(jOffset_, jOffset_) = k;
-  stiffness_.block<3, 3>(0, jOffset_) = -k;
-  stiffness_.block<3, 3>(jOffset_, 0) = -k;
+  stiffness_.block(0, 0, dim_, dim_) = kt;
+  stiffness_.block(jOffset_, jOffset_, dim_, dim_) = kt;
+  stiffness_.block(0, jOffset_, dim_, dim_) = -kt;
+  stiffness_.block(jOffset_, 0, dim_, dim_) = -kt;
 }
 
 MatrixView Truss::tangentStiff() {
@@ -91,8 +103,8 @@ MatrixView Truss::initialStiff() {
 VectorView Truss::resistingForce() {
   const Vector3 f = axialForce() * axis_;
   force_.setZero();
-  force_.segment<3>(0) = -f;
-  force_.segment<3>(jOffset_) = f;
+  force_.segment(0, dim_) = -f.head(dim_);
+  force_.segment(jOffset_, dim_) = f.head(dim_);
   return VectorView(force_.data(), force_.size());
 }
 
@@ -102,7 +114,7 @@ MatrixView Truss::massMatrix() {
   if (total != 0.0) {
     const double diagonal = consistentMass_ ? total / 3.0 : total / 2.0;
     const double coupling = consistentMass_ ? total / 6.0 : 0.0;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < dim_; ++k) {
       mass_(k, k) = diagonal;
       mass_(jOffset_ + k, jOffset_ + k) = diagonal;
       mass_(k, jOffset_ + k) = coupling;
@@ -137,7 +149,10 @@ Response Truss::setResponse(const std::vector<std::string>& args) {
     if (largeDisplacement()) return {{"N"}, [this] { return Vector::Constant(1, axialForce()); }};
     const int ndf = nodes()[0]->ndf();
     std::vector<std::string> names;
-    const char* const labels[6] = {"N_", "Vy_", "Vz_", "T_", "My_", "Mz_"};
+    // A 2D node's third dof is the rotation about z.
+    const char* const labels3d[6] = {"N_", "Vy_", "Vz_", "T_", "My_", "Mz_"};
+    const char* const labels2d[3] = {"N_", "Vy_", "Mz_"};
+    const char* const* labels = dim_ == 2 ? labels2d : labels3d;
     for (int a = 1; a <= 2; ++a)
       for (int k = 0; k < ndf; ++k) names.push_back(labels[k] + std::to_string(a));
     return {names, [this, ndf] {

@@ -10,9 +10,9 @@ class CommandArgs;
 
 // element('truss', tag, i, j, A, matTag, <'-rho', rho>, <'-cMass', 1>, <'-doRayleigh', 1>):
 // a two-node bar with axial force N = A * sigma(strain). Small displacement:
-// strain = e0 . (u_j - u_i) / L0 along the initial axis e0. Nodes may have
-// ndf 3 or 6; the bar loads translations only (zero rows/columns for the
-// rotations). rho is mass per unit length: lumped rho*L/2 per translation
+// strain = e0 . (u_j - u_i) / L0 along the initial axis e0. Works in 1D, 2D
+// and 3D: nodes have ndm translations (ndf 1; 2 or 3; 3 or 6) and the bar
+// loads translations only (zero rows/columns for the rotations). rho is mass per unit length: lumped rho*L/2 per translation
 // by default, consistent (rho*L/6)[2 1; 1 2] with -cMass 1.
 class Truss : public Element {
  public:
@@ -34,6 +34,7 @@ class Truss : public Element {
         bool consistentMass, bool doRayleigh);
 
   std::string className() const override { return "truss"; }
+  bool supportsSpace(int ndm) const override { return ndm >= 1 && ndm <= 3; }
 
   void update() override;
   MatrixView tangentStiff() override;
@@ -72,6 +73,7 @@ class Truss : public Element {
  private:
   // Writes [k -k; -k k] on the translations of the two nodes.
   void formStiffness(const Matrix3& k);
+  // j minus i on the translations, padded to 3 with zeros.
   Vector3 relative(const Eigen::VectorXd& iValues, const Eigen::VectorXd& jValues) const;
 
   double area_;
@@ -80,6 +82,7 @@ class Truss : public Element {
   bool consistentMass_;
   bool doRayleigh_;
 
+  int dim_ = 3;      // translations per node: the nodes' ndm
   int jOffset_ = 3;  // first dof of node j (ndf of node i)
   double initialLength_ = 0.0;
   Vector3 initialAxis_ = Vector3::UnitX();

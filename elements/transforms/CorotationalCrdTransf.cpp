@@ -366,7 +366,10 @@ void CorotationalCrdTransf::print(std::ostream& os) const {
 
 namespace {
 
-std::unique_ptr<CrdTransf> buildCorotationalCrdTransf(CommandArgs& args, Domain&) {
+std::unique_ptr<CrdTransf> buildCorotationalCrdTransf(CommandArgs& args, Domain& domain) {
+  if (domain.spaceDim() != 3)
+    args.fail("the Corotational transformation is implemented for 3D models only (-ndm 3); use 'Linear' or "
+              "'PDelta' in " + std::to_string(domain.spaceDim()) + "D");
   const auto d = LinearCrdTransf::parse(args, "Corotational");
   return std::make_unique<CorotationalCrdTransf>(d.tag, d.vecxz, d.jointOffsetI, d.jointOffsetJ);
 }

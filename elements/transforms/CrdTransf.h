@@ -8,6 +8,7 @@
 namespace beamsolid {
 
 class Node;
+class CrdTransf2d;
 
 // Geometric transformation of a 3D beam (geomTransf): maps the 12 global end
 // dofs to the 6 basic deformations and basic forces back to global forces and
@@ -67,6 +68,10 @@ class CrdTransf {
   virtual Vector12 localResistingForce(const Vector6& q, const Vector12& p0) const = 0;
 
   virtual void print(std::ostream& os) const { os << "geomTransf " << tag_ << " type " << className() << '\n'; }
+
+  // The 2D transformation this definition stands for in a 2D model (a
+  // geomTransf defined there has vecxz = Z), or null where there is none.
+  virtual std::unique_ptr<CrdTransf2d> planar() const;
 
   // Local end forces A^T q + p0 of the basic system on a chord of `length`:
   // the equilibrium every transformation starts from (geometric terms, such

@@ -8,6 +8,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "elements/transforms/LinearCrdTransf2d.h"
 
 namespace beamsolid {
 
@@ -166,10 +167,38 @@ void LinearCrdTransf::print(std::ostream& os) const {
   os << '\n';
 }
 
-LinearCrdTransf::Definition LinearCrdTransf::parse(CommandArgs& args, const std::string& type) {
+std::unique_ptr<CrdTransf2d> CrdTransf::planar() const { return nullptr; }
+
+std::unique_ptr<CrdTransf2d> LinearCrdTransf::planar() const {
+  return std::make_unique<LinearCrdTransf2d>(tag(), offsetI_.head<2>(), offsetJ_.head<2>());
+}
+
+LinearCrdTransf::Definition LinearCrdTransf::parse(CommandArgs& args, const std::string& type, int ndm) {
   Definition d;
   d.tag = args.nextInt("transfTag");
   args.setContext("geomTransf " + type + " " + std::to_string(d.tag));
+  if (ndm == 2) {
+    // The plane is x-y: local z is global Z, so vecxz = Z.
+    d.vecxz = Vector3::UnitZ();
+    if (args.nextIsNumber())
+      args.fail("vecxz is for 3D models; in a 2D model (-ndm 2) give geomTransf('" + type +
+                "', tag, <'-jntOffset', dXi, dYi, dXj, dYj>)");
+    while (!args.done()) {
+      if (args.nextFlag("-jntOffset")) {
+        const std::vector<double> off = args.nextDoubles("jntOffset");
+        if (off.size() != 4)
+          args.fail("-jntOffset needs 4 numbers in 2D (dXi, dYi, dXj, dYj), got " + std::to_string(off.size()));
+        d.jointOffsetI = Vector3(off[0], off[1], 0.0);
+        d.jointOffsetJ = Vector3(off[2], off[3], 0.0);
+      } else if (args.nextIsString()) {
+        args.fail("unknown option '" + *args.peekString() + "' (expected '-jntOffset')");
+      } else {
+        args.expectEnd();
+      }
+    }
+    return d;
+  }
+  if (ndm != 3) args.fail("beam transformations need a 2D or 3D model, this one has -ndm " + std::to_string(ndm));
   const char* names[3] = {"vecxzX", "vecxzY", "vecxzZ"};
   for (int k = 0; k < 3; ++k) {
     if (!args.nextIsNumber())
@@ -195,8 +224,8 @@ LinearCrdTransf::Definition LinearCrdTransf::parse(CommandArgs& args, const std:
 
 namespace {
 
-std::unique_ptr<CrdTransf> buildLinearCrdTransf(CommandArgs& args, Domain&) {
-  const auto d = LinearCrdTransf::parse(args, "Linear");
+std::unique_ptr<CrdTransf> buildLinearCrdTransf(CommandArgs& args, Domain& domain) {
+  const auto d = LinearCrdTransf::parse(args, "Linear", domain.spaceDim());
   return std::make_unique<LinearCrdTransf>(d.tag, d.vecxz, d.jointOffsetI, d.jointOffsetJ);
 }
 

@@ -36,6 +36,7 @@ class LinearCrdTransf : public CrdTransf {
   Vector12 localResistingForce(const Vector6& q, const Vector12& p0) const override;
 
   void print(std::ostream& os) const override;
+  std::unique_ptr<CrdTransf2d> planar() const override;
 
   // What geomTransf('Linear'|'PDelta', tag, vecxzX, vecxzY, vecxzZ,
   // <'-jntOffset', dXi, dYi, dZi, dXj, dYj, dZj>) defines.
@@ -45,8 +46,9 @@ class LinearCrdTransf : public CrdTransf {
     Vector3 jointOffsetI = Vector3::Zero();
     Vector3 jointOffsetJ = Vector3::Zero();
   };
-  // Parses the arguments after the type name; sets the args' context.
-  static Definition parse(CommandArgs& args, const std::string& type);
+  // Parses the arguments after the type name; sets the args' context. In a
+  // 2D model: (tag, <'-jntOffset', dXi, dYi, dXj, dYj>), vecxz = Z.
+  static Definition parse(CommandArgs& args, const std::string& type, int ndm = 3);
 
  protected:
   // "geomTransf <type> <tag>", the prefix of this transformation's messages.

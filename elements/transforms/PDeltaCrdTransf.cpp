@@ -1,11 +1,17 @@
 #include "elements/transforms/PDeltaCrdTransf.h"
 
+#include "core/Domain.h"
 #include "core/Registry.h"
+#include "elements/transforms/PDeltaCrdTransf2d.h"
 
 namespace beamsolid {
 
 std::unique_ptr<CrdTransf> PDeltaCrdTransf::clone() const {
   return std::make_unique<PDeltaCrdTransf>(tag(), vecxz(), jointOffsetI(), jointOffsetJ());
+}
+
+std::unique_ptr<CrdTransf2d> PDeltaCrdTransf::planar() const {
+  return std::make_unique<PDeltaCrdTransf2d>(tag(), jointOffsetI().head<2>(), jointOffsetJ().head<2>());
 }
 
 PDeltaCrdTransf::Vector12 PDeltaCrdTransf::chordShear(double axialForce) const {
@@ -43,8 +49,8 @@ PDeltaCrdTransf::Matrix12 PDeltaCrdTransf::globalStiffMatrix(const Matrix6& kb, 
 
 namespace {
 
-std::unique_ptr<CrdTransf> buildPDeltaCrdTransf(CommandArgs& args, Domain&) {
-  const auto d = LinearCrdTransf::parse(args, "PDelta");
+std::unique_ptr<CrdTransf> buildPDeltaCrdTransf(CommandArgs& args, Domain& domain) {
+  const auto d = LinearCrdTransf::parse(args, "PDelta", domain.spaceDim());
   return std::make_unique<PDeltaCrdTransf>(d.tag, d.vecxz, d.jointOffsetI, d.jointOffsetJ);
 }
 

@@ -19,6 +19,7 @@ class PDeltaCrdTransf : public LinearCrdTransf {
 
   std::string className() const override { return "PDelta"; }
   std::unique_ptr<CrdTransf> clone() const override;
+  std::unique_ptr<CrdTransf2d> planar() const override;
 
   Vector12 globalResistingForce(const Vector6& q, const Vector12& p0) const override;
   Matrix12 globalStiffMatrix(const Matrix6& kb, const Vector6& q) const override;

@@ -521,7 +521,7 @@ TEST(ElasticBeam3d, CommandAndSetupErrorsAreClear) {
   EXPECT_EQ(build(beamArgs(1, 2, 3, 1)),
             "element elasticBeamColumn 1: node 3 has 3 dofs, the 3D elasticBeamColumn needs 6 (create its nodes "
             "after model('basic', '-ndm', 3, '-ndf', 6))");
-  EXPECT_NE(build({2LL, 1LL, 2LL, 1.0, 1.0, 1.0, 1LL}).find("the 2D form (A, E, Iz, transfTag) is not supported"),
+  EXPECT_NE(build({2LL, 1LL, 2LL, 1.0, 1.0, 1.0, 1LL}).find("the 2D form (A, E, Iz, transfTag) needs a 2D model (-ndm 2)"),
             std::string::npos);
   EXPECT_NE(build({2LL, 1LL, 2LL, 5LL, 1LL}).find("the section form"), std::string::npos);
   EXPECT_NE(build({2LL, 1LL, 2LL, 1.0, 1.0, 1.0}).find("expected A, E, G, J, Iy, Iz, transfTag (7 numbers)"),

@@ -14,12 +14,14 @@ def base(m, ndf=3):
 # (command, args, fragment the message must contain)
 CASES = [
     # wrong argument count
-    ("node", (3, 0.0, 0.0), "argument 4 (z): expected a number"),
+    ("node", (3, 0.0, 0.0), "node 3: expected 3 coordinates (x, y, z) in a model with -ndm 3, got 2"),
+    ("node", (3, 0.0, 0.0, 0.0, 0.0), "node 3: expected 3 coordinates (x, y, z) in a model with -ndm 3, got 4"),
     ("fix", (1, 1, 1), "has 3 dofs but 2 flags"),
     ("mass", (1, 1.0), "has 3 dofs but 1 mass values"),
     ("equalDOF", (1, 2), "argument 3 (dof): expected at least 1"),
     ("load", (1, 1.0, 0.0), "has 3 dofs but 2 load values"),
-    ("model", ("basic", "-ndm", 2), "-ndm 2 is not supported"),
+    ("model", ("basic", "-ndm", 4), "-ndm must be 1, 2 or 3, got 4"),
+    ("model", ("basic", "-ndm", 2, "-ndf", 6), "-ndf must be 2 or 3 in 2D, got 6"),
     ("timeSeries", ("Linear",), "argument 2"),
     # wrong type
     ("node", ("a", 0.0, 0.0, 0.0), "argument 1 (nodeTag): expected an integer, got 'a'"),

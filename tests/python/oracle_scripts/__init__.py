@@ -20,4 +20,5 @@ SCRIPTS = (
     "response_names",
     "zerolength_contact",
     "beam_contact",
+    "frames_2d",
 )
