@@ -7,6 +7,7 @@ beamsolid_add_plugin, as its users build it; tests/plugins for the refusals).
 test_plugin_install.py builds the tutorial's plugin out of tree against a pip-installed package.
 """
 import importlib.util
+import json
 import pathlib
 
 import pytest
@@ -71,6 +72,33 @@ def test_tutorial_spring_yields_at_the_materials_strength(model):
     assert model.nodeDisp(2, 1) == pytest.approx(0.05, rel=1e-12)
     assert model.eleResponse(1, "axialForce") == pytest.approx([10.0], rel=1e-12)
     assert model.eleResponse(1, "material", "stress") == pytest.approx([10.0], rel=1e-12)
+
+
+def test_tutorial_spring_is_recorded_like_a_builtin(model, tmp_path):
+    """An Element recorder of the plugin's responses writes what eleResponse answers, step by step,
+    and its sidecar names the columns the element gave."""
+    model.loadPlugin(str(TUTORIAL))
+    model.uniaxialMaterial("ElasticPP", 1, 1000.0, 0.01)
+    spring_model(model, "NonlinearSpring3D", 1, 1, 2, 1)
+    model.sp(2, 1, 1.0)
+    out = tmp_path / "spring.out"
+    model.recorder("Element", "-file", str(out), "-time", "-precision", 16, "-ele", 1, "axialForce")
+    model.integrator("LoadControl", 0.004)
+    model.analysis("Static")
+    expected = []
+    for _ in range(5):
+        assert model.analyze(1) == 0
+        expected.append([model.getTime(), *model.eleResponse(1, "axialForce")])
+    model.wipe()
+    rows = [[float(v) for v in line.split()] for line in out.read_text().splitlines()]
+    # k = 1000 up to the yield force 10 kN at 10 mm: 4, 8, 10, 10, 10 kN.
+    assert len(rows) == 5
+    for row, want in zip(rows, expected):
+        assert row == pytest.approx(want, rel=1e-15)
+    assert [r[1] for r in rows] == pytest.approx([4.0, 8.0, 10.0, 10.0, 10.0], rel=1e-12)
+    sidecar = json.loads((tmp_path / "spring.out.json").read_text())
+    assert [c["name"] for c in sidecar["columns"]] == ["time", "e1_N"]
+    assert sidecar["columns"][1]["component"] == "N" and sidecar["columns"][1]["response"] == "axialForce"
 
 
 def test_tutorial_spring_refuses_bad_input(model):
