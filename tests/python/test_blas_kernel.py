@@ -13,10 +13,13 @@ import numpy as np
 import pytest
 
 import beamsolid
+from beamsolid.blas import CHOICE, CORETYPE
 from conftest import subprocess_env
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-# Kernels and one flag each needs, to find a kernel this CPU cannot run.
+# Kernels and one flag each needs, to find a kernel this CPU cannot run. The tests below set
+# OPENBLAS_CORETYPE in child processes only to such a kernel, which BeamSolid must replace before
+# OpenBLAS loads, or to Prescott, which every x86-64 CPU since 2005 runs.
 NEEDS = {"BULLDOZER": "fma4", "SAPPHIRERAPIDS": "amx_tile", "SKYLAKEX": "avx512f", "HASWELL": "avx2"}
 # Prescott's SSE3 code runs on every x86-64 CPU made since 2005: the generic kernel.
 GENERIC = "PRESCOTT"
@@ -55,7 +58,7 @@ INFO_SCRIPT = textwrap.dedent(
 
 def child_info(**env):
     base = subprocess_env()
-    for k in ("OPENBLAS_CORETYPE", "BEAMSOLID_BLAS_CHOICE"):
+    for k in (CORETYPE, CHOICE):
         base.pop(k, None)
     base.update(env)
     done = subprocess.run([sys.executable, "-c", INFO_SCRIPT], env=base, capture_output=True, text=True, timeout=120)
@@ -81,16 +84,16 @@ def test_a_setting_the_cpu_cannot_run_is_replaced_and_said():
     bad = next((k for k, flag in NEEDS.items() if flag not in flags), None)
     if bad is None:
         pytest.skip("this CPU runs every kernel in NEEDS")
-    info = child_info(OPENBLAS_CORETYPE=bad)
+    info = child_info(**{CORETYPE: bad})
     assert set(info["kernel_requires"]) <= flags
     assert info["kernel"].upper() != bad
-    assert f"OPENBLAS_CORETYPE={bad} needs {NEEDS[bad]}" in info["warning"]
+    assert f"{CORETYPE}={bad} needs {NEEDS[bad]}" in info["warning"]
     assert any("Illegal instruction" in w for w in info["warnings"])
 
 
 def test_a_runnable_setting_is_kept():
     openblas()
-    info = child_info(OPENBLAS_CORETYPE=GENERIC)
+    info = child_info(**{CORETYPE: GENERIC})
     assert info["kernel"].upper() == GENERIC
     assert info["coretype"] == GENERIC
     assert "was set before BeamSolid started" in info["reason"]
@@ -99,7 +102,7 @@ def test_a_runnable_setting_is_kept():
 
 def test_the_choice_is_made_once_per_process_tree():
     """A child takes the parent's choice from the environment instead of probing again."""
-    info = child_info(BEAMSOLID_BLAS_CHOICE="|made by the parent test process|")
+    info = child_info(**{CHOICE: "|made by the parent test process|"})
     assert info["reason"] == "made by the parent test process"
     assert info["coretype"] == ""
 
@@ -127,10 +130,10 @@ SOLVE_SCRIPT = textwrap.dedent(
 
 def solve_on(kernel):
     env = subprocess_env()
-    for k in ("OPENBLAS_CORETYPE", "BEAMSOLID_BLAS_CHOICE"):
+    for k in (CORETYPE, CHOICE):
         env.pop(k, None)
     if kernel:
-        env["OPENBLAS_CORETYPE"] = kernel
+        env[CORETYPE] = kernel
     done = subprocess.run([sys.executable, "-c", SOLVE_SCRIPT, HERE], env=env, capture_output=True, text=True,
                           timeout=600)
     assert done.returncode == 0, done.stderr[-3000:]
