@@ -91,7 +91,8 @@ void CholmodSolver::solve(const double* b, double* x) {
 namespace {
 void registerCholmod(Registry& r) {
   // The SPD OpenSees systems map to CHOLMOD, 3-7x faster than UMFPACK on SPD stiffness.
-  for (const char* name : {"Cholmod", "BandSPD", "ProfileSPD", "SparseSYM", "SparseSPD"})
+  for (const char* name : {"Cholmod", "BandSPD", "ProfileSPD", "SProfileSPD", "ParallelProfileSPD", "SparseSYM",
+                           "SparseSPD"})
     r.systems.add(name, [name](CommandArgs& args, Domain&) -> std::unique_ptr<LinearSolver> {
       while (!args.done()) args.restAsStrings();
       return std::make_unique<CholmodSolver>(name);

@@ -27,8 +27,9 @@ struct AnalysisComponents {
 
 // analyze(n): for each step the integrator starts it, the algorithm
 // iterates, and the domain commits; on failure the domain reverts to its
-// last committed state and a negative code is returned (-3 algorithm,
-// -2 integrator), exactly as OpenSees scripts expect.
+// last committed state and a negative code is returned (-1 set-up, -2
+// integrator, -3 algorithm or element), exactly as OpenSees scripts expect:
+// analyze never throws, and lastError() says why it failed.
 class StaticAnalysis {
  public:
   StaticAnalysis(Domain& domain, AnalysisComponents& components);
@@ -38,6 +39,8 @@ class StaticAnalysis {
 
  private:
   int runSteps(int numSteps);
+  // Reverts to the last converged state, keeps and prints the reason.
+  int fail(int code, const std::string& reason);
 
   Domain& domain_;
   AnalysisComponents& components_;

@@ -75,9 +75,10 @@ namespace {
 void registerUmfpack(Registry& r) {
   // Every general OpenSees system maps to UMFPACK: it handles unsymmetric and
   // indefinite matrices (frictional contact, Lagrange multipliers) and is the
-  // fastest general sparse LU we have.
-  for (const char* name : {"UmfPack", "Umfpack", "SparseGeneral", "BandGeneral", "FullGeneral", "Mumps", "SuperLU",
-                           "ProfileSPD_General"})
+  // fastest general sparse LU we have. The diagonal systems of explicit
+  // dynamics solve exactly the same equations when the matrix is diagonal.
+  for (const char* name : {"UmfPack", "Umfpack", "SparseGeneral", "SparseGEN", "BandGeneral", "BandGen", "BandGEN",
+                           "FullGeneral", "Mumps", "SuperLU", "ProfileSPD_General", "Diagonal", "MPIDiagonal"})
     r.systems.add(name, [name](CommandArgs& args, Domain&) -> std::unique_ptr<LinearSolver> {
       // OpenSees options such as '-piv' or '-lvalueFact' do not apply; they are read and ignored.
       while (!args.done()) args.restAsStrings();

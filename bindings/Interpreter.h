@@ -31,6 +31,8 @@ class Interpreter {
   Domain& domain() { return *domain_; }
   // Closes recorders (flushing them); used at interpreter exit.
   void closeRecorders() { domain_->removeRecorders(); }
+  // Why the most recent analyze returned a negative code; empty after one that succeeded.
+  const std::string& lastError() const { return lastError_; }
 
  private:
   static const std::map<std::string, Command>& commands();
@@ -131,6 +133,7 @@ class Interpreter {
   bool haveAnalysis_ = false;
   AnalysisComponents components_;
   std::unique_ptr<StaticAnalysis> analysis_;
+  std::string lastError_;
   std::vector<double> eigenvalues_;
   // A copy of the material under testUniaxialMaterial; setStrain commits it.
   std::unique_ptr<UniaxialMaterial> testMaterial_;

@@ -79,6 +79,7 @@ PYBIND11_MODULE(_beamsolid, m) {
           },
           py::arg("name"))
       .def("close_recorders", &Interpreter::closeRecorders)
+      .def("last_error", &Interpreter::lastError)
       .def(
           "tangent_check",
           [](Interpreter& self, int eleTag, double h) {

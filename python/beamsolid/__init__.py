@@ -13,7 +13,7 @@ from ._beamsolid import OpenSeesError, __version__, command_names, plugin_abi, r
 from .element import Element, register_element  # noqa: E402
 from .model import Model  # noqa: E402
 
-__all__ = ["Element", "Model", "OpenSeesError", "__version__", "blas_info", "cmake_dir", "command_names", "get_include",
+__all__ = ["Element", "Model", "OpenSeesError", "__version__", "blas_info", "cmake_dir", "command_names", "get_include", "last_error",
            "plugin_abi", "register_element", "registered_types"]
 
 
@@ -25,3 +25,13 @@ def get_include():
 def cmake_dir():
     """The folder of BeamSolidConfig.cmake: find_package(BeamSolid) with BeamSolid_DIR set to it."""
     return _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), "cmake")
+
+
+def last_error():
+    """Why the last ``analyze`` of the ``beamsolid.opensees`` commands failed ('' if it succeeded).
+
+    For a ``beamsolid.Model`` of your own, use its ``last_error()`` method.
+    """
+    from .opensees import default_model
+
+    return default_model().last_error()

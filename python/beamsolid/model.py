@@ -47,6 +47,16 @@ class Model:
         if text:
             sys.stdout.write(text)
 
+    def last_error(self):
+        """Why the most recent ``analyze`` returned a negative code ('' after one that succeeded).
+
+        ``analyze`` never raises once it runs, as in OpenSees: a failed step (no
+        convergence, a singular matrix, a system that cannot take the model, an
+        element that threw) returns -1, -2 or -3, prints a WARNING and leaves the
+        model at its last converged state; the reason is kept here.
+        """
+        return self._interp.last_error()
+
     def close(self):
         """Flush and close this model's recorders."""
         self._interp.close_recorders()
