@@ -36,22 +36,34 @@ Matrix toDense(const DofMap& map, const std::vector<double>& values) {
   return A;
 }
 
-// The eigenproblem lives on the equations that carry mass ("massed"); the
-// massless ones are condensed out: for a semi-definite M whose zero rows are
-// those of zero diagonal, K phi = lambda M phi is exactly
-// (K_mm - K_ms K_ss^-1 K_sm) phi_m = lambda M_mm phi_m with phi_s = -K_ss^-1 K_sm phi_m,
-// a problem with a positive definite mass.
+// The eigenproblem lives on the directions that carry mass ("massed"); the
+// massless ones are condensed out. With an orthogonal change of basis
+// Q = [Q_m Q_s] that splits M into M' = diag(M_mm, 0), K phi = lambda M phi is
+// exactly (K'_mm - K'_ms K'_ss^-1 K'_sm) phi_m = lambda M_mm phi_m, a problem
+// with a positive definite mass. Mostly a direction is one equation (a dof
+// with mass or without); where masses couple equations (a mass carried
+// through a rigidLink onto the rotations of its retained node, consistent
+// element masses) each coupled block is split by its own eigenvectors, since
+// such a block can be singular although every diagonal entry is positive
+// (translational mass on a rigidLink: 6 coupled dofs, rank 3).
+struct Direction {
+  std::vector<std::pair<int, double>> terms;  // (equation, coefficient), unit length
+};
+
 struct Partition {
-  std::vector<int> massed;    // equation of each massed index
-  std::vector<int> massless;  // equations without mass
+  std::vector<Direction> massed;
+  std::vector<Direction> massless;
 };
 
 Partition partition(const DofMap& map, const std::vector<double>& mass) {
   const int n = map.numEquations();
   const auto& diag = map.diagonalPosition();
+  const auto& colStart = map.columnStart();
+  const auto& rowIndex = map.rowIndex();
   double largest = 0.0;
   for (int eq = 0; eq < n; ++eq) largest = std::max(largest, std::fabs(mass[diag[eq]]));
-  Partition p;
+  // A relative cut-off so that round-off of transformed zero masses counts as none.
+  const double tiny = 1e-14 * largest;
   for (int eq = 0; eq < n; ++eq) {
     const double m = mass[diag[eq]];
     if (m < -1e-12 * largest) {
@@ -59,54 +71,120 @@ Partition partition(const DofMap& map, const std::vector<double>& mass) {
       throw OpenSeesError("eigen: node " + std::to_string(node) + " dof " + std::to_string(dof + 1) +
                           " has a negative mass (" + std::to_string(m) + ")");
     }
-    // A relative cut-off so that round-off of transformed zero masses counts as none.
-    (m > 1e-14 * largest ? p.massed : p.massless).push_back(eq);
+  }
+  // Blocks of equations coupled by off-diagonal masses (union-find).
+  std::vector<int> parent(n);
+  for (int i = 0; i < n; ++i) parent[i] = i;
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (int c = 0; c < n; ++c)
+    for (int k = colStart[c]; k < colStart[c + 1]; ++k)
+      if (rowIndex[k] != c && std::fabs(mass[k]) > tiny) parent[root(rowIndex[k])] = root(c);
+  std::vector<std::vector<int>> blocks(n);
+  for (int eq = 0; eq < n; ++eq) blocks[root(eq)].push_back(eq);
+
+  Partition p;
+  auto unit = [](int eq) { return Direction{{{eq, 1.0}}}; };
+  for (const std::vector<int>& block : blocks) {
+    if (block.empty()) continue;
+    if (block.size() == 1) {
+      (mass[diag[block[0]]] > tiny ? p.massed : p.massless).push_back(unit(block[0]));
+      continue;
+    }
+    const int size = static_cast<int>(block.size());
+    Matrix B = Matrix::Zero(size, size);
+    for (int j = 0; j < size; ++j)
+      for (int k = colStart[block[j]]; k < colStart[block[j] + 1]; ++k) {
+        const auto at = std::lower_bound(block.begin(), block.end(), rowIndex[k]);
+        if (at != block.end() && *at == rowIndex[k]) B(at - block.begin(), j) = mass[k];
+      }
+    // Small blocks (nodal masses through constraints) are split exactly; a
+    // large one (consistent mass of a whole mesh) is positive definite in
+    // practice, which a Cholesky factorization confirms.
+    constexpr int kLargestDenseBlock = 240;
+    if (size > kLargestDenseBlock) {
+      Eigen::LLT<Matrix> llt(0.5 * (B + B.transpose()));
+      if (llt.info() != Eigen::Success) {
+        auto [node, dof] = map.nodeDofOfEquation(block.front());
+        throw OpenSeesError("eigen: the mass matrix is singular within a block of " + std::to_string(size) +
+                            " coupled dofs (from node " + std::to_string(node) + " dof " + std::to_string(dof + 1) +
+                            "); give those dofs mass or use lumped masses");
+      }
+      for (int eq : block) p.massed.push_back(unit(eq));
+      continue;
+    }
+    Eigen::SelfAdjointEigenSolver<Matrix> split(0.5 * (B + B.transpose()));
+    for (int j = 0; j < size; ++j) {
+      Direction d;
+      for (int i = 0; i < size; ++i)
+        if (split.eigenvectors()(i, j) != 0.0) d.terms.emplace_back(block[i], split.eigenvectors()(i, j));
+      (split.eigenvalues()[j] > tiny ? p.massed : p.massless).push_back(std::move(d));
+    }
   }
   return p;
 }
 
-// (K - sigma M)^-1 restricted to the massed equations, on the model's
-// factorization: the massless rows of the right-hand side are zero, so this
-// is exactly the inverse of the condensed K_hat - sigma M_mm.
+// x = sum_i c_i d_i over directions d_i (full equation space).
+void expand(const std::vector<Direction>& dirs, const double* c, Vector& x) {
+  for (std::size_t i = 0; i < dirs.size(); ++i)
+    for (const auto& [eq, coef] : dirs[i].terms) x[eq] += coef * c[i];
+}
+
+// c_i = d_i . x.
+void project(const std::vector<Direction>& dirs, const Vector& x, double* c) {
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
+    double sum = 0.0;
+    for (const auto& [eq, coef] : dirs[i].terms) sum += coef * x[eq];
+    c[i] = sum;
+  }
+}
+
+// Q_m^T (K - sigma M)^-1 Q_m on the model's factorization: the right-hand
+// side has no massless component, so this is exactly the inverse of the
+// condensed K_hat - sigma M_mm.
 class CondensedShiftInvert {
  public:
   using Scalar = double;
-  CondensedShiftInvert(LinearSystem& system, const std::vector<int>& massed)
+  CondensedShiftInvert(LinearSystem& system, const std::vector<Direction>& massed)
       : system_(system), massed_(massed), rhs_(Vector::Zero(system.size())), solution_(system.size()) {}
   Eigen::Index rows() const { return static_cast<Eigen::Index>(massed_.size()); }
   Eigen::Index cols() const { return rows(); }
   // The factorization of K - sigma M is made before the solver is built.
   void set_shift(double) {}
   void perform_op(const double* x, double* y) const {
-    for (std::size_t i = 0; i < massed_.size(); ++i) rhs_[massed_[i]] = x[i];
+    rhs_.setZero();
+    expand(massed_, x, rhs_);
     system_.solve(rhs_, solution_);
-    for (std::size_t i = 0; i < massed_.size(); ++i) y[i] = solution_[massed_[i]];
+    project(massed_, solution_, y);
   }
 
  private:
   LinearSystem& system_;
-  const std::vector<int>& massed_;
+  const std::vector<Direction>& massed_;
   mutable Vector rhs_, solution_;
 };
 
-// y = M_mm x.
+// y = M_mm x = Q_m^T M Q_m x.
 class CondensedMass {
  public:
   using Scalar = double;
-  CondensedMass(const DofMap& map, const std::vector<double>& mass, const std::vector<int>& massed)
+  CondensedMass(const DofMap& map, const std::vector<double>& mass, const std::vector<Direction>& massed)
       : map_(map), mass_(mass), massed_(massed), full_(Vector::Zero(map.numEquations())) {}
   Eigen::Index rows() const { return static_cast<Eigen::Index>(massed_.size()); }
   Eigen::Index cols() const { return rows(); }
   void perform_op(const double* x, double* y) const {
-    for (std::size_t i = 0; i < massed_.size(); ++i) full_[massed_[i]] = x[i];
+    full_.setZero();
+    expand(massed_, x, full_);
     multiply(map_, mass_, full_, product_);
-    for (std::size_t i = 0; i < massed_.size(); ++i) y[i] = product_[massed_[i]];
+    project(massed_, product_, y);
   }
 
  private:
   const DofMap& map_;
   const std::vector<double>& mass_;
-  const std::vector<int>& massed_;
+  const std::vector<Direction>& massed_;
   mutable Vector full_, product_;
 };
 
@@ -117,43 +195,53 @@ struct Modes {
 
 Modes solveDense(const DofMap& map, const std::vector<double>& stiffness, const std::vector<double>& mass,
                  const Partition& p, int numModes) {
-  const Matrix K = toDense(map, stiffness);
-  const Matrix M = toDense(map, mass);
+  const int n = map.numEquations();
   const int nm = static_cast<int>(p.massed.size()), ns = static_cast<int>(p.massless.size());
-  auto block = [](const Matrix& A, const std::vector<int>& rows, const std::vector<int>& cols) {
-    Matrix B(rows.size(), cols.size());
-    for (std::size_t j = 0; j < cols.size(); ++j)
-      for (std::size_t i = 0; i < rows.size(); ++i) B(i, j) = A(rows[i], cols[j]);
-    return B;
+  // Q = [Q_m Q_s], orthogonal; K' = Q^T K Q and M' = Q^T M Q = diag(M_mm, 0).
+  Matrix Q = Matrix::Zero(n, nm + ns);
+  auto fill = [&Q](const std::vector<Direction>& dirs, int first) {
+    for (std::size_t i = 0; i < dirs.size(); ++i)
+      for (const auto& [eq, coef] : dirs[i].terms) Q(eq, first + static_cast<int>(i)) = coef;
   };
-  Matrix Kc = block(K, p.massed, p.massed);
+  fill(p.massed, 0);
+  fill(p.massless, nm);
+  const Matrix K = Q.transpose() * toDense(map, stiffness) * Q;
+  const Matrix M = Q.transpose() * toDense(map, mass) * Q;
+  Matrix Kc = K.topLeftCorner(nm, nm);
   Matrix toMassless(ns, nm);  // phi_s = toMassless * phi_m
   if (ns > 0) {
-    const Eigen::FullPivLU<Matrix> Kss(block(K, p.massless, p.massless));
+    const Eigen::FullPivLU<Matrix> Kss(K.bottomRightCorner(ns, ns));
     if (!Kss.isInvertible()) {
-      auto [node, dof] = map.nodeDofOfEquation(p.massless.front());
+      Eigen::Index worst = 0;
+      // Name an equation of a massless direction the stiffness cannot hold.
+      const Vector kernel = Kss.kernel().col(0);
+      kernel.cwiseAbs().maxCoeff(&worst);
+      const Direction& d = p.massless[worst];
+      int eq = d.terms.front().first;
+      double biggest = 0.0;
+      for (const auto& [e, c] : d.terms)
+        if (std::fabs(c) > biggest) biggest = std::fabs(c), eq = e;
+      auto [node, dof] = map.nodeDofOfEquation(eq);
       throw OpenSeesError("eigen: the dofs without mass (e.g. node " + std::to_string(node) + " dof " +
                           std::to_string(dof + 1) +
                           ") form a mechanism: their stiffness is singular, so they cannot be condensed out");
     }
-    toMassless = -Kss.solve(block(K, p.massless, p.massed));
-    Kc += block(K, p.massed, p.massless) * toMassless;
+    toMassless = -Kss.solve(K.bottomLeftCorner(ns, nm));
+    Kc += K.topRightCorner(nm, ns) * toMassless;
   }
   const Matrix Kh = 0.5 * (Kc + Kc.transpose());
-  const Matrix Mmm = block(M, p.massed, p.massed);
+  const Matrix Mmm = M.topLeftCorner(nm, nm);
   Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(Kh, 0.5 * (Mmm + Mmm.transpose()));
   if (solver.info() != Eigen::Success)
     throw OpenSeesError("eigen -fullGenLapack: the mass matrix of the dofs with mass is not positive definite");
   Modes modes;
-  modes.vectors = Matrix::Zero(map.numEquations(), numModes);
+  modes.vectors = Matrix::Zero(n, numModes);
+  Vector phi(nm + ns);
   for (int k = 0; k < numModes; ++k) {  // eigenvalues come in ascending order
     modes.values.push_back(solver.eigenvalues()[k]);
-    const Vector phiM = solver.eigenvectors().col(k);
-    for (int i = 0; i < nm; ++i) modes.vectors(p.massed[i], k) = phiM[i];
-    if (ns > 0) {
-      const Vector phiS = toMassless * phiM;
-      for (int i = 0; i < ns; ++i) modes.vectors(p.massless[i], k) = phiS[i];
-    }
+    phi.head(nm) = solver.eigenvectors().col(k);
+    if (ns > 0) phi.tail(ns) = toMassless * phi.head(nm);
+    modes.vectors.col(k) = Q * phi;
   }
   return modes;
 }
@@ -174,10 +262,11 @@ Modes solveSparse(AnalysisModel& model, const std::vector<double>& stiffness, co
   double sigma = 0.0;
   if (!factorShifted(sigma)) {
     double traceK = 0.0, traceM = 0.0;
-    for (int eq : p.massed) {
-      traceK += std::fabs(stiffness[map.diagonalPosition()[eq]]);
-      traceM += mass[map.diagonalPosition()[eq]];
-    }
+    for (const Direction& d : p.massed)
+      for (const auto& [eq, coef] : d.terms) {
+        traceK += coef * coef * std::fabs(stiffness[map.diagonalPosition()[eq]]);
+        traceM += coef * coef * mass[map.diagonalPosition()[eq]];
+      }
     sigma = -1e-4 * (traceK > 0.0 ? traceK / traceM : 1.0);
     if (!factorShifted(sigma))
       throw OpenSeesError("eigen: K - sigma M cannot be factored (sigma = " + std::to_string(sigma) +
@@ -214,7 +303,7 @@ Modes solveSparse(AnalysisModel& model, const std::vector<double>& stiffness, co
   Vector full(map.numEquations()), Mx, phi;
   for (int k = 0; k < numModes; ++k) {
     full.setZero();
-    for (int i = 0; i < nm; ++i) full[p.massed[i]] = x(i, k);
+    expand(p.massed, x.col(k).data(), full);
     multiply(map, mass, full, Mx);
     system.solve(Mx, phi);
     modes.vectors.col(k) = (lambda[k] - sigma) * phi;
