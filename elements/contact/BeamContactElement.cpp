@@ -145,6 +145,8 @@ void BeamContactElement::storeResponseState() {
     frictionForce_.setZero();
     forceScalars_.setZero();
     slipIncrement_.setZero();
+    surfaceTraction_.setZero();
+    surfaceSlip_.setZero();
     return;
   }
   const Vector2& T = material_->traction();
@@ -152,6 +154,8 @@ void BeamContactElement::storeResponseState() {
   frictionForce_ = -(T(0) * g.contravariantBase(0) + T(1) * g.contravariantBase(1));
   forceScalars_ = Vector3(normalForce_, -T(0) / lengthXi, -T(1) / lengthPsi);
   slipIncrement_ = Vector2(g.slip()(0) * lengthXi, g.slip()(1) * lengthPsi);
+  surfaceTraction_ = T;
+  surfaceSlip_ = g.slip();
 }
 
 void BeamContactElement::commitState() {
@@ -251,7 +255,9 @@ Response BeamContactElement::setResponse(const std::vector<std::string>& args) {
   if (what == "soilfrictionforce")
     return Response::named({"Fx", "Fy", "Fz"}, [this] { return withoutNegativeZeros(frictionForce()); });
   if (what == "forcescalar")
-    return Response::named({"N", "T1", "T2"}, [this] { return withoutNegativeZeros(forceScalars()); });
+    return Response::named({"N", "T1", "T2"}, [this] { return withoutNegativeZeros(surfaceForceScalars()); });
+  if (what == "physicalforcescalar")
+    return Response::named({"N", "T_axial", "T_circ"}, [this] { return withoutNegativeZeros(forceScalars()); });
   // Contact actions on the beam nodes: minus the element's resisting force there.
   if (what == "masterforce" || what == "primaryforce")
     return Response::named({"Fx_1", "Fy_1", "Fz_1", "Fx_2", "Fy_2", "Fz_2"}, [this] {
@@ -269,7 +275,9 @@ Response BeamContactElement::setResponse(const std::vector<std::string>& args) {
     return Response::named({"Fx_1", "Fy_1", "Fz_1", "Mx_1", "My_1", "Mz_1", "Fx_2", "Fy_2", "Fz_2", "Mx_2", "My_2",
                             "Mz_2"},
                            [this] { return withoutNegativeZeros(-mechanicalForce_.head<12>()); });
-  if (what == "slip") return Response::named({"s_xi", "s_psi"}, [this] { return withoutNegativeZeros(totalSlip()); });
+  if (what == "slip") return Response::named({"s_xi", "s_psi"}, [this] { return withoutNegativeZeros(surfaceSlip()); });
+  if (what == "totalslip")
+    return Response::named({"s_axial", "s_circ"}, [this] { return withoutNegativeZeros(totalSlip()); });
   if (what == "gap") return Response::named({"gap"}, [this] { return vectorOf({gap()}); });
   if (what == "status")
     return Response::named({"status"}, [this] { return vectorOf({double(static_cast<int>(status()))}); });

@@ -87,8 +87,16 @@ class BeamContactElement : public Element {
   // Its frictional part, -T_alpha g^alpha.
   const Vector3& frictionForce() const { return frictionForce_; }
   // [t_n, friction along g_xi, friction along g_psi] acting on the secondary
-  // node (the friction components are -T_alpha / |g_alpha|).
+  // node (the friction components are -T_alpha / |g_alpha|), in force units.
   const Vector3& forceScalars() const { return forceScalars_; }
+  // OpenSees' forcescalar: [t_n, T_xi, T_psi], the friction tractions as
+  // covariant components on the unnormalised surface base (T_xi ~ -L times
+  // the axial friction force on the secondary node, T_psi ~ -R times the
+  // circumferential one).
+  Vector3 surfaceForceScalars() const { return Vector3(forceScalars_(0), surfaceTraction_(0), surfaceTraction_(1)); }
+  // OpenSees' slip: the last step's slip s^alpha in the surface's parametric
+  // coordinates (xi per segment length, psi in radians), kept after commit.
+  const Vector2& surfaceSlip() const { return surfaceSlip_; }
   // Relative slip of the secondary node over the pile surface while in
   // contact, accumulated since the start: [along g_xi, along g_psi] as
   // arc lengths (s^xi |g_xi|, s^psi |g_psi| summed over steps).
@@ -111,9 +119,12 @@ class BeamContactElement : public Element {
   // Multipliers (zero diagonal) and sliding friction (unsymmetric tangent).
   bool needsGeneralSolver() const override { return true; }
 
-  // force (3), frictionforce (3), forcescalar (3), masterforce|primaryforce (6),
-  // mastermoment|primarymoment (6), masterreaction|primaryreaction (12),
-  // slip (2), gap (1), status (1: 0 separated, 1 sticking, 2 sliding), xi (1),
+  // As OpenSees: force (3), frictionforce (3, on the pile), forcescalar (3),
+  // masterforce|primaryforce (6), mastermoment|primarymoment (6),
+  // masterreaction|primaryreaction (12), slip (2). Ours: soilFrictionForce (3),
+  // physicalForceScalar (3: N and the friction along and around the pile on
+  // the soil node, in force units), totalSlip (2: metres along and around the
+  // pile since the start), gap (1), status (1: 0 separated, 1 sticking, 2 sliding), xi (1),
   // normal (3), segment (2: the current beam node tags), handovers (1).
   // Names are matched case-insensitively.
   Response setResponse(const std::vector<std::string>& args) override;
@@ -178,6 +189,8 @@ class BeamContactElement : public Element {
   Vector3 frictionForce_ = Vector3::Zero();
   Vector3 forceScalars_ = Vector3::Zero();
   Vector2 slipIncrement_ = Vector2::Zero();
+  Vector2 surfaceTraction_ = Vector2::Zero();
+  Vector2 surfaceSlip_ = Vector2::Zero();
   double gapAtUpdate_ = 0.0;
   double xiAtUpdate_ = 0.0;
   Vector3 normalAtUpdate_ = Vector3::Zero();

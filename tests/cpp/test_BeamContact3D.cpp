@@ -463,10 +463,23 @@ TEST(BeamContact3D, SlipOfTheSoilNodeAlongAndAroundAStraightPile) {
   EXPECT_LE((m->element->setResponse({"frictionforce"}).value() + friction).norm(), 0.0);
   const Vector force = m->element->setResponse({"force"}).value();
   EXPECT_LE((force - Vector(Vector3(50.0, 0.0, -kG * delta))).norm(), 1e-12);
-  const Vector scalars = m->element->setResponse({"forcescalar"}).value();
+  const Vector scalars = m->element->setResponse({"physicalForceScalar"}).value();
   EXPECT_NEAR(scalars(0), 50.0, 0.0);
   EXPECT_NEAR(scalars(1), -kG * delta, 1e-12);
   EXPECT_NEAR(scalars(2), 0.0, 1e-12);
+  // OpenSees' forcescalar: the tractions on the unnormalised surface base,
+  // T_xi = -|g_xi| times the axial friction (|g_xi| = L = 2 on this straight
+  // pile), T_psi = -R times the circumferential one.
+  const Vector opensees = m->element->setResponse({"forcescalar"}).value();
+  EXPECT_NEAR(opensees(0), 50.0, 0.0);
+  EXPECT_NEAR(opensees(1), 2.0 * kG * delta, 1e-12);
+  EXPECT_NEAR(opensees(2), 0.0, 1e-12);
+  // OpenSees' slip: this step's slip in parametric coordinates (delta / L);
+  // ours, totalSlip, in metres.
+  const Vector slip = m->element->setResponse({"slip"}).value();
+  EXPECT_NEAR(slip(0), delta / 2.0, 1e-16);
+  EXPECT_NEAR(slip(1), 0.0, 1e-16);
+  EXPECT_NEAR(m->element->setResponse({"totalSlip"}).value()(0), delta, 1e-15);
   // Resisting force on the soil node: minus the contact force on it.
   EXPECT_LE((m->element->resistingForce().segment<3>(12) + force).norm(), 1e-12);
 }
@@ -551,7 +564,7 @@ TEST(BeamContact3D, ResponsesHaveOpenSeesNamesAndSizes) {
   const std::pair<const char*, std::size_t> expected[] = {
       {"force", 3},        {"frictionforce", 3},  {"forcescalar", 3},   {"masterforce", 6},   {"primaryforce", 6},
       {"mastermoment", 6}, {"primarymoment", 6},  {"masterreaction", 12}, {"primaryreaction", 12},
-      {"slip", 2},         {"gap", 1},            {"status", 1},        {"xi", 1},            {"frictionForce", 3},  {"soilFrictionForce", 3}};
+      {"slip", 2},         {"totalSlip", 2},      {"physicalForceScalar", 3}, {"gap", 1},            {"status", 1},        {"xi", 1},            {"frictionForce", 3},  {"soilFrictionForce", 3}};
   for (const auto& [what, size] : expected) {
     const Response r = m->element->setResponse({what});
     ASSERT_TRUE(r) << what;

@@ -87,7 +87,7 @@ TEST(BeamContactAnalysis, StickSlipAlongThePileMatchesTheClosedForm) {
   s("fix", 5, 1, 1, 0);
   s("element", "testSpring", 2, 3, 5, k);
   pressSoilNode(s, {{5, 3}});
-  EXPECT_NEAR(s.list("eleResponse", 1, "forcescalar")[0], P, 1e-9 * P);
+  EXPECT_NEAR(s.list("eleResponse", 1, "physicalForceScalar")[0], P, 1e-9 * P);
 
   const double capacity = mu * P + c;
   const double series = k * G / (k + G);
@@ -100,6 +100,7 @@ TEST(BeamContactAnalysis, StickSlipAlongThePileMatchesTheClosedForm) {
   // Elastic-plastic history of the spring force, tracked by hand.
   double elasticSlip = 0.0;  // soil node's stick displacement G * elasticSlip = friction
   double plasticSlip = 0.0;
+  double previousU3 = 0.0;
   for (int step = 1; step <= steps; ++step) {
     ASSERT_EQ(s.integer("analyze", 1), 0) << "step " << step;
     const double t = s.number("getTime");
@@ -111,14 +112,20 @@ TEST(BeamContactAnalysis, StickSlipAlongThePileMatchesTheClosedForm) {
     const double u3 = u5 - force / k;
     plasticSlip = u3 - elasticSlip;
     EXPECT_NEAR(s.number("nodeDisp", 3, 3), u3, 1e-12) << "step " << step;
-    const auto scalars = s.list("eleResponse", 1, "forcescalar");
+    const auto scalars = s.list("eleResponse", 1, "physicalForceScalar");
     EXPECT_NEAR(scalars[0], P, 1e-9 * P) << "step " << step;
     // Friction on the soil node opposes the spring: -F along the axis.
     EXPECT_NEAR(scalars[1], -force, 1e-8 * capacity) << "step " << step;
-    EXPECT_NEAR(s.list("eleResponse", 1, "slip")[0], u3, 1e-12) << "step " << step;
+    EXPECT_NEAR(s.list("eleResponse", 1, "totalSlip")[0], u3, 1e-12) << "step " << step;
+    // OpenSees' names: forcescalar's friction is the traction on the
+    // unnormalised axial base vector (length L = 2: -L times ours), and slip
+    // is this step's slip as a fraction of the segment.
+    EXPECT_NEAR(s.list("eleResponse", 1, "forcescalar")[1], -2.0 * scalars[1], 2e-8 * capacity) << "step " << step;
+    EXPECT_NEAR(s.list("eleResponse", 1, "slip")[0], (u3 - previousU3) / 2.0, 1e-12) << "step " << step;
+    previousU3 = u3;
     EXPECT_EQ(s.list("eleResponse", 1, "status")[0], std::abs(G * trial) > capacity ? 2.0 : 1.0) << "step " << step;
   }
-  EXPECT_NEAR(s.list("eleResponse", 1, "forcescalar")[1], capacity, 1e-8 * capacity);
+  EXPECT_NEAR(s.list("eleResponse", 1, "physicalForceScalar")[1], capacity, 1e-8 * capacity);
 }
 
 TEST(BeamContactAnalysis, TwistedPileDragsTheSoilNodeAroundItsCircumference) {
@@ -145,12 +152,12 @@ TEST(BeamContactAnalysis, TwistedPileDragsTheSoilNodeAroundItsCircumference) {
     ASSERT_EQ(s.integer("analyze", 1), 0) << "step " << step;
     const double phi = phiMax * step / steps;
     const double F = std::min(G * R * phi, capacity);
-    const auto scalars = s.list("eleResponse", 1, "forcescalar");
+    const auto scalars = s.list("eleResponse", 1, "physicalForceScalar");
     EXPECT_NEAR(scalars[2], F, 1e-6 * capacity) << "step " << step;
     const auto moments = s.list("eleResponse", 1, "mastermoment");
     EXPECT_NEAR(moments[2] + moments[5], -R * F, 1e-6 * R * capacity) << "step " << step;
     // The node moved -R phi relative to the surface.
-    EXPECT_NEAR(s.list("eleResponse", 1, "slip")[1], -R * phi, 1e-6 * R * phiMax) << "step " << step;
+    EXPECT_NEAR(s.list("eleResponse", 1, "totalSlip")[1], -R * phi, 1e-6 * R * phiMax) << "step " << step;
   }
   s("reactions");
   EXPECT_NEAR(s.number("nodeReaction", 3, 2), -capacity, 1e-6 * capacity);
@@ -183,7 +190,7 @@ TEST(BeamContactAnalysis, OpeningAndClosingAreSeenOneStepLate) {
     const double t = step * dt;
     const double f = t <= 1.0 ? t : t <= 2.0 ? 1.0 - 2.0 * (t - 1.0) : -1.0 + 2.0 * (t - 2.0);
     const double u = s.number("nodeDisp", 3, 1);
-    const double lambda = s.list("eleResponse", 1, "forcescalar")[0];
+    const double lambda = s.list("eleResponse", 1, "physicalForceScalar")[0];
     if (inContact) {
       EXPECT_NEAR(u, 0.0, 1e-12) << "step " << step;
       EXPECT_NEAR(lambda, f * P, 1e-9 * P) << "step " << step;
@@ -250,7 +257,7 @@ TEST(BeamContactAnalysis, NewtonConvergesQuadraticallyWhileSlidingInTwoDirection
   EXPECT_GE(checked, 1) << ::testing::PrintToString(norms);
   // Sliding: the friction force on the node is mu lambda + c in magnitude
   // (lambda dips below P: the node rides up the curved surface).
-  const auto scalars = s.list("eleResponse", 1, "forcescalar");
+  const auto scalars = s.list("eleResponse", 1, "physicalForceScalar");
   EXPECT_NEAR(std::hypot(scalars[1], scalars[2]), mu * scalars[0] + c, 1e-6 * capacity);
   EXPECT_NEAR(scalars[0], P, 1e-2 * P);
 }
@@ -326,7 +333,7 @@ TEST(BeamContactAnalysis, DonutPulloutResistanceIsMuTimesTheNormalForces) {
   ASSERT_EQ(s.integer("analyze", 2), 0);
   double normalSum = 0.0;
   for (int tag : contacts) {
-    const auto f = s.list("eleResponse", tag, "forcescalar");
+    const auto f = s.list("eleResponse", tag, "physicalForceScalar");
     EXPECT_GT(f[0], 0.0) << "contact " << tag;
     EXPECT_NEAR(f[1], 0.0, 1e-12) << "frictionless stage";
     normalSum += f[0];
@@ -346,10 +353,10 @@ TEST(BeamContactAnalysis, DonutPulloutResistanceIsMuTimesTheNormalForces) {
   double frictionSum = 0.0, muLambdaSum = 0.0;
   Vector3 onPile = Vector3::Zero();
   for (int k = 0; k < nLevels; ++k) {
-    const double lambda0 = s.list("eleResponse", contacts[k * nTheta], "forcescalar")[0];
+    const double lambda0 = s.list("eleResponse", contacts[k * nTheta], "physicalForceScalar")[0];
     for (int j = 0; j < nTheta; ++j) {
       const int tag = contacts[k * nTheta + j];
-      const auto f = s.list("eleResponse", tag, "forcescalar");
+      const auto f = s.list("eleResponse", tag, "physicalForceScalar");
       EXPECT_EQ(s.list("eleResponse", tag, "status")[0], 2.0) << "contact " << tag << " slides";
       EXPECT_NEAR(f[0], lambda0, 1e-8 * lambda0) << "symmetry at level " << k;
       EXPECT_NEAR(f[1], muPile * f[0], 1e-8 * muPile * f[0]) << "contact " << tag;

@@ -437,7 +437,7 @@ TEST(BeamContactPile, AnalysisRenumbersAfterAHandOverAndTheForceMovesToTheNewSeg
     ASSERT_EQ(s.integer("analyze", 1), 0) << "step " << step;
     const double u6 = uMax * step / steps;
     const double u4 = s.number("nodeDisp", 4, 3);
-    const auto scalars = s.list("eleResponse", 1, "forcescalar");
+    const auto scalars = s.list("eleResponse", 1, "physicalForceScalar");
     EXPECT_NEAR(scalars[0], P, 1e-9 * P) << "step " << step;
     const auto nodes = std::get<std::vector<int>>(s("eleNodes", 1));
     if (handOverStep == 0 && nodes[0] == 2) {

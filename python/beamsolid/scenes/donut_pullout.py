@@ -245,7 +245,7 @@ class DonutModel:
     # --- queries --------------------------------------------------------------
     def contact_scalars(self):
         """[(N, T_axial, T_circumferential)] of every contact (forces on the soil nodes)."""
-        return [self.m.eleResponse(t, "forcescalar") for t in self.contacts]
+        return [self.m.eleResponse(t, "physicalForceScalar") for t in self.contacts]
 
     def normal_sum(self):
         return sum(f[0] for f in self.contact_scalars())
