@@ -127,6 +127,8 @@ bool parseSearchType(const std::string& type, NewtonLineSearch::Search& out) {
 
 std::unique_ptr<Algorithm> buildNewtonLineSearch(CommandArgs& args, Domain&) {
   NewtonLineSearch::Options o;
+  // The old form algorithm('NewtonLineSearch', ratio) gives the tolerance alone.
+  if (!args.done() && !args.nextIsString()) o.tolerance = args.nextDouble("ratio");
   while (!args.done()) {
     const std::string opt = args.nextString("option");
     if (opt == "-type") {

@@ -90,13 +90,10 @@ Result Interpreter::analyze(CommandArgs& a) {
   if (!analysis_) a.fail("no analysis: call analysis('Static') first");
   if (n < 0) a.fail("numIncr must be non-negative");
   if (!components_.integrator->isStatic()) a.fail("integrator " + components_.integrator->name() + " is not static");
-  int code = 0;
-  try {
-    code = analysis_->analyze(n);
-  } catch (...) {
-    domain_->flushRecorders();
-    throw;
-  }
+  // analyze never throws once it runs (StaticAnalysis::analyze): a failure
+  // is a negative code, its reason kept for last_error().
+  const int code = analysis_->analyze(n);
+  lastError_ = analysis_->lastError();
   // Recorded data reaches the disk after every analyze, success or not.
   domain_->flushRecorders();
   return static_cast<long long>(code);
@@ -164,11 +161,11 @@ Result Interpreter::testNorm(CommandArgs& a) {
   return norms;
 }
 
+// As OpenSees: the size of the system as the last analyze built it (0 before
+// the first one), not of the model as it stands.
 Result Interpreter::systemSize(CommandArgs& a) {
   a.expectEnd();
   if (!analysis_) return 0LL;
-  if (components_.handler && components_.numberer && components_.solver)
-    analysis_->model().setup(*components_.handler, *components_.numberer, *components_.solver);
   return static_cast<long long>(analysis_->model().numEquations());
 }
 

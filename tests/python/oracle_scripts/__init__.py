@@ -21,4 +21,5 @@ SCRIPTS = (
     "zerolength_contact",
     "beam_contact",
     "frames_2d",
+    "analysis_idioms",
 )

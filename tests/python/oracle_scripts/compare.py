@@ -53,10 +53,6 @@ KNOWN_DIFFERENCES = {
         "sidecar columns are unique; OpenSees repeats sigma11 ... sigma13 eight times",
     ("response_names", "truss3 localForce"):
         "OpenSees' truss localForce recorder writes 2*ndf values but no ResponseType names",
-    ("command_behaviour", "analyze singular from the start"):
-        "policy (docs/commands.md): BeamSolid raises, naming the dofs without stiffness, when the model is "
-        "singular before any step converged; OpenSees returns -3, so a script that checks the code and "
-        "retries stops with an exception in BeamSolid",
     ("command_behaviour", "load with * values"):
         "OpenSees accepts a load with the wrong number of values silently; BeamSolid raises naming the node's ndf",
     ("command_behaviour", "remove sp of nothing"):
@@ -70,13 +66,6 @@ KNOWN_DIFFERENCES = {
         "zeroLengthContact3D sliding: BeamSolid keeps the friction force at mu N + c (return map, the documented "
         "Mohr-Coulomb law); OpenSeesPy's drops to Kt times the slip past a stick point moved to the step's "
         "position (0 on the step that first slides: a sawtooth)",
-    ("beam_contact", "pull*.forcescalar"):
-        "BeamContact3D forcescalar: BeamSolid gives N and the friction forces along and around the pile "
-        "(physical, kN); OpenSeesPy's tangential entries are the components on the segment's unnormalised "
-        "tangent basis, -L times the axial friction here (issue 15: to decide)",
-    ("beam_contact", "pull*.slip"):
-        "BeamContact3D slip: BeamSolid gives the total slip in metres along and around the pile; OpenSeesPy "
-        "the last step's slip in the segment's parametric coordinate (metres / L) (issue 15: to decide)",
     ("zerolength_contact", "dir?.recontact.step0.force"):
         "zeroLengthContact3D closing again after opening: BeamSolid's friction restarts from the tangential "
         "position at the opening (no force carried through a gap); OpenSeesPy keeps the old stick point",
