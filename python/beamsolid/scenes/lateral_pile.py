@@ -459,7 +459,6 @@ def run(problem=LateralPile(), numerics=Numerics(), m=None, out=None, record=Fal
     model.geostatic()
     t2 = time.perf_counter()
     model.release()
-    r.n_equations = int(model.m.systemSize())
     if record:
         if out is None:
             raise ValueError("lateral_pile.run: record=True needs an out directory")
@@ -470,6 +469,7 @@ def run(problem=LateralPile(), numerics=Numerics(), m=None, out=None, record=Fal
                                adaptive=numerics.adaptive, min_fraction=numerics.min_fraction,
                                breakpoints=times[1:-1], on_step=lambda t, it: model.record(r, t, it))
     t3 = time.perf_counter()
+    r.n_equations = int(model.m.systemSize())  # the system the push solved
     r.converged = stepper.converged
     r.failed_at = None if stepper.converged else stepper.failed_at
     r.steps_cut, r.steps_grown = stepper.cuts, stepper.grows

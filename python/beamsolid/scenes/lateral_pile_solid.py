@@ -168,10 +168,10 @@ class SolidPileModel:
         else:
             m.integrator("DisplacementControl", HEAD, 1, p.head_disp / n.steps)
         m.analysis("Static")
-        r.n_equations = m.systemSize() if hasattr(m, "systemSize") else 0
         for _ in range(n.steps):
             if m.analyze(1) != 0:
                 return r
+            r.n_equations = m.systemSize() if hasattr(m, "systemSize") else 0
             r.iterations.append(m.testIter())
             r.head_disp.append(m.nodeDisp(HEAD, 1))
             r.head_force.append(m.getLoadFactor(2) * n.head_load if n.control == "force" else self.head_reaction())
