@@ -1,4 +1,5 @@
 #pragma once
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -48,6 +49,7 @@ class Interpreter {
   Result fixCoordinate(CommandArgs&, int axis);
   Result equalDOF(CommandArgs&);
   Result rigidLink(CommandArgs&);
+  Result rigidDiaphragm(CommandArgs&);
   Result mass(CommandArgs&);
   Result uniaxialMaterial(CommandArgs&);
   Result nDMaterial(CommandArgs&);
@@ -113,6 +115,41 @@ class Interpreter {
   Result printModel(CommandArgs&);
   Result getEigenvalues(CommandArgs&);
 
+  // --- small commands of OpenSeesPy scripts (InterpreterUtilities.cpp) ---
+  Result version(CommandArgs&);
+  Result getNP(CommandArgs&);
+  Result getPID(CommandArgs&);
+  Result barrier(CommandArgs&);
+  Result start(CommandArgs&);
+  Result stop(CommandArgs&);
+  Result logFile(CommandArgs&);
+  Result nodeBounds(CommandArgs&);
+  Result numIter(CommandArgs&);
+  Result basicForce(CommandArgs&);
+  Result basicDeformation(CommandArgs&);
+  Result basicStiffness(CommandArgs&);
+  Result sectionForce(CommandArgs&);
+  Result sectionDeformation(CommandArgs&);
+  Result sectionStiffness(CommandArgs&);
+  Result sectionFlexibility(CommandArgs&);
+  Result sectionLocation(CommandArgs&);
+  Result sectionWeight(CommandArgs&);
+  Result getFixedNodes(CommandArgs&);
+  Result getFixedDOFs(CommandArgs&);
+  Result getConstrainedNodes(CommandArgs&);
+  Result getRetainedNodes(CommandArgs&);
+  Result nodeResponse(CommandArgs&);
+  Result setNodeCoord(CommandArgs&);
+  Result setNodeDisp(CommandArgs&);
+  Result setNodeVel(CommandArgs&);
+  Result setNodeAccel(CommandArgs&);
+  Result domainChange(CommandArgs&);
+  Result elementShortcut(CommandArgs&, const char* command, const char* response);
+  Result sectionQuery(CommandArgs&, const char* command, const char* what);
+  Result integrationQuery(CommandArgs&, const char* command, const char* what);
+  Result mpNodes(CommandArgs&, const char* command, bool constrained);
+  Result setNodeState(CommandArgs&, const char* command, int which);
+
   // --- driving one uniaxial material (InterpreterMaterials.cpp) ---
   Result testUniaxialMaterial(CommandArgs&);
   Result setStrain(CommandArgs&);
@@ -134,6 +171,8 @@ class Interpreter {
   AnalysisComponents components_;
   std::unique_ptr<StaticAnalysis> analysis_;
   std::string lastError_;
+  std::chrono::steady_clock::time_point timerStart_;
+  bool timerRunning_ = false;
   std::vector<double> eigenvalues_;
   // A copy of the material under testUniaxialMaterial; setStrain commits it.
   std::unique_ptr<UniaxialMaterial> testMaterial_;

@@ -210,7 +210,8 @@ Result Interpreter::rigidLink(CommandArgs& a) {
   a.setContext("rigidLink " + type + " " + std::to_string(r) + " " + std::to_string(c));
   a.expectEnd();
   if (type != "beam" && type != "bar") a.fail("type must be 'beam' or 'bar', got '" + type + "'");
-  if (domain_->spaceDim() != 3) a.fail("rigidLink is implemented for 3D models only (-ndm 3)");
+  requireModel(a);
+  const int ndm = domain_->spaceDim();
   const Node& rn = domain_->node(r, a.context());
   const Node& cn = domain_->node(c, a.context());
   MPConstraint mp;
@@ -219,12 +220,24 @@ Result Interpreter::rigidLink(CommandArgs& a) {
   mp.constrainedNode = c;
   if (type == "bar") {
     // Translations equal (small displacements).
-    for (int d = 0; d < 3; ++d) {
+    for (int d = 0; d < ndm; ++d) {
       mp.retainedDofs.push_back(d);
       mp.constrainedDofs.push_back(d);
     }
-    mp.C = Matrix::Identity(3, 3);
-  } else {
+    mp.C = Matrix::Identity(ndm, ndm);
+  } else if (ndm == 2) {
+    if (rn.ndf() != 3) a.fail("the retained node of a rigid beam link needs 3 dofs in 2D (has " + std::to_string(rn.ndf()) + ")");
+    // u_c = u_r + theta_r e_z x d, theta_c = theta_r, with d = X_c - X_r.
+    const Vector3 d = cn.crd() - rn.crd();
+    const int nc = cn.ndf() == 3 ? 3 : 2;
+    for (int k = 0; k < 3; ++k) mp.retainedDofs.push_back(k);
+    for (int k = 0; k < nc; ++k) mp.constrainedDofs.push_back(k);
+    mp.C = Matrix::Zero(nc, 3);
+    mp.C(0, 0) = mp.C(1, 1) = 1.0;
+    mp.C(0, 2) = -d.y();
+    mp.C(1, 2) = d.x();
+    if (nc == 3) mp.C(2, 2) = 1.0;
+  } else if (ndm == 3) {
     if (rn.ndf() != 6) a.fail("the retained node of a rigid beam link needs 6 dofs (has " + std::to_string(rn.ndf()) + ")");
     // u_c = u_r + theta_r x d, theta_c = theta_r, with d = X_c - X_r.
     const Vector3 d = cn.crd() - rn.crd();
@@ -237,8 +250,51 @@ Result Interpreter::rigidLink(CommandArgs& a) {
     skew << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
     mp.C.block<3, 3>(0, 3) = -skew;  // theta x d = -d x theta
     if (nc == 6) mp.C.block<3, 3>(3, 3).setIdentity();
+  } else {
+    a.fail("a rigid beam link needs a 2D or 3D model (use 'bar' in 1D)");
   }
   domain_->addMP(std::move(mp), a.context());
+  return {};
+}
+
+// rigidDiaphragm(perpDirn, rNodeTag, *cNodeTags): the constrained nodes move
+// with the retained node as a rigid plate in the plane perpendicular to axis
+// perpDirn: in-plane translations u_c = u_r + theta_r e_p x d, and the same
+// rotation about e_p. Out-of-plane motion stays free.
+Result Interpreter::rigidDiaphragm(CommandArgs& a) {
+  const int perp = a.nextInt("perpDirn");
+  const int r = a.nextInt("rNodeTag");
+  a.setContext("rigidDiaphragm " + std::to_string(perp) + " " + std::to_string(r));
+  const std::vector<int> constrained = a.nextInts("cNodeTags");
+  a.expectEnd();
+  requireModel(a);
+  if (domain_->spaceDim() != 3) a.fail("rigidDiaphragm needs a 3D model (-ndm 3)");
+  if (perp < 1 || perp > 3) a.fail("perpDirn must be 1, 2 or 3 (the axis normal to the diaphragm), got " + std::to_string(perp));
+  if (constrained.empty()) a.fail("missing the constrained node tags");
+  const Node& rn = domain_->node(r, a.context());
+  if (rn.ndf() != 6) a.fail("the retained node " + std::to_string(r) + " needs 6 dofs (has " + std::to_string(rn.ndf()) + ")");
+  const int p = perp - 1, i = (p + 1) % 3, j = (p + 2) % 3;  // in-plane axes i, j
+  for (int c : constrained) {
+    const Node& cn = domain_->node(c, a.context());
+    if (c == r) a.fail("node " + std::to_string(c) + " is the retained node");
+    if (cn.ndf() != 6) a.fail("constrained node " + std::to_string(c) + " needs 6 dofs (has " + std::to_string(cn.ndf()) + ")");
+    const Vector3 d = cn.crd() - rn.crd();
+    const double span = std::max({std::abs(d.x()), std::abs(d.y()), std::abs(d.z()), 1.0});
+    if (std::abs(d[p]) > 1e-10 * span)
+      a.fail("node " + std::to_string(c) + " is not in the diaphragm's plane (its coordinate " + std::to_string(perp) +
+             " differs from node " + std::to_string(r) + "'s by " + std::to_string(d[p]) + ")");
+    MPConstraint mp;
+    mp.kind = "rigidDiaphragm";
+    mp.retainedNode = r;
+    mp.constrainedNode = c;
+    mp.retainedDofs = {i, j, 3 + p};
+    mp.constrainedDofs = {i, j, 3 + p};
+    // e_p x d: its i component is -d_j, its j component d_i.
+    mp.C = Matrix::Identity(3, 3);
+    mp.C(0, 2) = -d[j];
+    mp.C(1, 2) = d[i];
+    domain_->addMP(std::move(mp), a.context());
+  }
   return {};
 }
 

@@ -83,6 +83,20 @@ void Domain::addElement(std::unique_ptr<Element> element, const std::string& con
   }
 }
 
+void Domain::nodeMoved(int tag, const std::string& context) {
+  for (const auto& [eleTag, e] : elements_) {
+    const auto& nodes = e->nodeTags();
+    if (std::find(nodes.begin(), nodes.end(), tag) == nodes.end()) continue;
+    try {
+      e->connect(*this);  // re-reads the nodes and the geometry
+    } catch (const OpenSeesError& error) {
+      throw OpenSeesError(context + ": element " + std::to_string(eleTag) + " cannot take the new position: " +
+                          error.what());
+    }
+  }
+  touch();
+}
+
 Element* Domain::findElement(int tag) const {
   auto it = elements_.find(tag);
   return it == elements_.end() ? nullptr : it->second.get();

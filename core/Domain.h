@@ -157,6 +157,8 @@ class Domain {
   // analysis knows to renumber and rebuild its sparsity pattern.
   long modelStamp() const { return modelStamp_; }
   void touch() { ++modelStamp_; }
+  // After setNodeCoord: the elements on node `tag` re-read their geometry.
+  void nodeMoved(int tag, const std::string& context);
 
   // Whether any element needs a general (non-SPD) solver.
   bool needsGeneralSolver() const;

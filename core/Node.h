@@ -19,6 +19,8 @@ class Node {
   const Vector3& crd() const { return crd_; }
   // The ndm coordinates the user gave.
   Vector coordinates() const { return crd_.head(ndm_); }
+  // setNodeCoord: the elements on this node must re-read it (Domain::nodeMoved).
+  void setCoordinate(int dim, double value) { crd_[dim] = value; }
 
   const Vector& trialDisp() const { return trialDisp_; }
   const Vector& committedDisp() const { return committedDisp_; }
