@@ -458,8 +458,8 @@ def test_geomtransf_with_vecxz_in_2d_is_refused(model):
         model.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
     with pytest.raises(beamsolid.OpenSeesError, match=r"-jntOffset needs 4 numbers in 2D"):
         model.geomTransf("PDelta", 2, "-jntOffset", 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    with pytest.raises(beamsolid.OpenSeesError, match=r"Corotational .* 3D models only"):
-        model.geomTransf("Corotational", 3)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"geomTransf Corotational 3: vecxz is for 3D models"):
+        model.geomTransf("Corotational", 3, 0.0, 0.0, 1.0)
 
 
 def test_beam_on_ndf2_nodes_is_refused(model):

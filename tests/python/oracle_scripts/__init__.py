@@ -21,4 +21,6 @@ SCRIPTS = (
     "zerolength_contact",
     "beam_contact",
     "frames_2d",
+    "quad_mesh",
+    "corotational_2d",
 )
