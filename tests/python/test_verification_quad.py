@@ -3,8 +3,8 @@
 - Cantilever in plane stress (length L, depth h, thickness t), clamped
   nodes at the root and a tip shear P spread parabolically over the tip
   nodes (consistent loads): the tip deflection converges, at second order
-  in the element size (meshes 2x8, 4x16, 8x32, observed rates about 2), to
-  within 0.5% of Timoshenko's beam with shear,
+  in the element size (meshes 16x4 to 128x32, observed rates 1.8 to 1.96),
+  to within 0.5% (measured: 0.13%) of Timoshenko's beam with shear,
       delta = P L^3 / (3 E I) + P L / (kappa G A),  kappa = 5/6;
   the remaining difference is the clamped root (warping restrained), which
   beam theory does not model.
@@ -67,13 +67,14 @@ def test_plane_stress_cantilever_converges_to_timoshenko(model):
     L, h, t, P = 10.0, 1.0, 0.5, 1.0
     I, A, G = t * h**3 / 12.0, t * h, E / (2 * (1 + NU))
     timoshenko = P * L**3 / (3 * E * I) + P * L / (5.0 / 6.0 * G * A)
-    tips = [cantilever_tip(model, 8 * m, 2 * m) for m in (1, 2, 4, 8)]
-    # Second order: successive differences shrink by 4.
+    tips = [cantilever_tip(model, 8 * m, 2 * m) for m in (2, 4, 8, 16)]
+    # Second order: successive differences shrink by 4 (measured rates 1.78,
+    # 1.93, 1.96; the coarsest meshes lock in bending, so start at 16 x 4).
     diffs = np.diff(tips)
     rates = np.log2(np.abs(diffs[:-1] / diffs[1:]))
     assert np.all((rates > 1.7) & (rates < 2.3)), (tips, rates)
-    # Richardson's limit within 0.5% of the beam with shear, and above the
-    # Euler-Bernoulli beam by about the shear term.
+    # Richardson's limit within 0.5% of the beam with shear (measured 0.13%
+    # below it; 128 x 32 itself is 0.39% below), and above Euler-Bernoulli.
     limit = tips[-1] + (tips[-1] - tips[-2]) / 3.0
     assert abs(limit - timoshenko) / timoshenko < 5e-3, (limit, timoshenko)
     assert limit > P * L**3 / (3 * E * I)
@@ -140,21 +141,25 @@ def test_pressure_resultant_is_p_times_edge_length(model, kind):
 
 
 def test_lumped_mass_totals_rho_thick_area(model):
-    """All nodes tied by equalDOF to node 1, which sits on a zeroLength spring
-    k in x and y: the modes have omega^2 = k / (rho t A)."""
+    """All nodes tied by equalDOF to node 1, which is held by two trusses of
+    axial stiffness k, one along x and one along y: both modes have
+    omega^2 = k / (rho t A)."""
     rho, t, k = 2.5, 0.4, 1.0e3
     model.model("basic", "-ndm", 2, "-ndf", 2)
     xy = [(0.0, 0.0), (2.0, 0.2), (2.2, 1.5), (-0.1, 1.2)]
     for i, (x, y) in enumerate(xy):
         model.node(i + 1, x, y)
-    model.node(5, 0.0, 0.0)
+    model.node(5, -1.0, 0.0)
+    model.node(6, 0.0, -1.0)
     model.fix(5, 1, 1)
+    model.fix(6, 1, 1)
     model.nDMaterial("ElasticIsotropic", 1, E, NU)
     model.element("quad", 1, 1, 2, 3, 4, t, "PlaneStress", 1, 0.0, rho)
     model.uniaxialMaterial("Elastic", 1, k)
-    model.element("zeroLength", 2, 5, 1, "-mat", 1, 1, "-dir", 1, 2)
+    model.element("Truss", 2, 5, 1, 1.0, 1)
+    model.element("Truss", 3, 6, 1, 1.0, 1)
     for n in (2, 3, 4):
         model.equalDOF(1, n, 1, 2)
     area = 0.5 * abs(sum(xy[a][0] * xy[(a + 1) % 4][1] - xy[(a + 1) % 4][0] * xy[a][1] for a in range(4)))
-    omega2 = model.eigen("-fullGenLapack", 1)[0]
-    assert abs(omega2 - k / (rho * t * area)) < 1e-10 * omega2
+    for omega2 in model.eigen("-fullGenLapack", 2):
+        assert abs(omega2 - k / (rho * t * area)) < 1e-10 * omega2
