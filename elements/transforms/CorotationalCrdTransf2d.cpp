@@ -102,8 +102,10 @@ CorotationalCrdTransf2d::Vector6 CorotationalCrdTransf2d::localResistingForce(co
 
 CorotationalCrdTransf2d::Vector6 CorotationalCrdTransf2d::endForce(const Vector3& q, const Vector6& p0) const {
   Vector6 f = basicFromEnd_.transpose() * q;
-  // p0 is given in the corotated frame: turn its end forces to global.
-  const double c = chord_.x(), s = chord_.y();
+  // p0 (the simple-support reactions of element loads) is turned to global
+  // with the initial axis, as OpenSees does: the loads keep their initial
+  // direction (a beam's gravity load stays vertical) and need no tangent.
+  const double c = initialAxis_.x(), s = initialAxis_.y();
   for (int k = 0; k < 2; ++k) {
     const double n = p0[3 * k], v = p0[3 * k + 1];
     f[3 * k] += c * n - s * v;

@@ -20,8 +20,10 @@ namespace beamsolid {
 // - Global forces B^T q with B = dv/du; the tangent is the exact derivative
 //   B^T kb B + N/Ln z z^T + (M_i + M_j)/Ln^2 (r z^T + z r^T) on the end
 //   translations (Crisfield's geometric stiffness), plus the rigid arms' term.
-//   Fixed-end forces p0 of element loads act in the corotated frame; their
-//   turning is left out of the tangent (globalStiffMatrix() is not given p0).
+//   Element loads: their basic forces q0 act through B like q, and the
+//   simple-support reactions p0 keep the directions of the initial local
+//   axes (as in OpenSeesPy 3.7.1: a uniform load on a horizontal cantilever
+//   stays vertical however far it bends), so they add nothing to the tangent.
 class CorotationalCrdTransf2d : public CrdTransf2d {
  public:
   using Vector2 = Eigen::Vector2d;

@@ -1,7 +1,8 @@
 // geomTransf Corotational in 2D (CorotationalCrdTransf2d) with the 2D
 // elasticBeamColumn: zero force under rigid-body motion of any size (also
 // past half a turn, with joint offsets), the tangent against finite
-// differences in a large deformed state, the small-displacement limit
+// differences in a large deformed state (with an element load), the
+// small-displacement limit
 // (the Linear transformation's stiffness), and the basic deformations of a
 // beam bent into a circular arc.
 #include <gtest/gtest.h>
@@ -89,6 +90,9 @@ TEST(CorotationalCrdTransf2d, TangentMatchesFiniteDifferencesInALargeDeformedSta
     // A large rotation (about 2.4 rad) plus bending and stretching.
     const double u[6] = {0.1, -0.05, 2.3, -4.1, 2.2, 2.6};
     setDisp(b, u);
+    // An element load too: its reactions keep their initial direction.
+    b.element->zeroLoad();
+    b.element->addLoad(beamsolid::ElementLoad{beamsolid::ElementLoad::Type::BeamUniform, {-30.0, 0.0, 10.0}}, 1.0);
     const Vector f = b.element->resistingForce();
     ASSERT_GT(f.cwiseAbs().maxCoeff(), 1.0);
     const auto check = beamsolid::TangentCheck::of(*b.element, 1e-7);

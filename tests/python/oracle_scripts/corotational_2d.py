@@ -46,6 +46,7 @@ def _steps(ops, out, prefix, steps, node, ele):
     out[prefix + "tip"] = tips
     out[prefix + "force"] = ops.eleResponse(ele, "force")
     out[prefix + "basicForce"] = ops.eleResponse(ele, "basicForce")
+    out[prefix + "localForce"] = ops.eleResponse(ele, "localForce")
     out[prefix + "basicDeformation"] = ops.eleResponse(ele, "basicDeformation")
     ops.reactions()
     out[prefix + "reaction"] = ops.nodeReaction(1)
@@ -68,7 +69,13 @@ def run(ops):
     _analysis(ops, 0.2)
     _steps(ops, out, "tipload.", 5, N + 1, 1)
 
-    # 3. A shallow two-bar frame, crown load; 4. the same with rigid arms.
+    # 3. Uniform transverse element load, which turns with the chord.
+    _cantilever(ops)
+    ops.eleLoad("-ele", *range(1, N + 1), "-type", "-beamUniform", -2.0 * E * I / L**3)
+    _analysis(ops, 0.25)
+    _steps(ops, out, "uniform.", 4, N + 1, 1)
+
+    # 4. A shallow two-bar frame, crown load; 5. the same with rigid arms.
     for label, offsets in (("arch.", ()), ("offsets.", ("-jntOffset", 0.1, 0.05, -0.2, 0.02))):
         ops.wipe()
         ops.model("basic", "-ndm", 2, "-ndf", 3)
