@@ -40,7 +40,14 @@ void CorotationalCrdTransf2d::initialize(const Node& nodeI, const Node& nodeJ) {
     throw OpenSeesError(context() + ": element has zero length: the ends at nodes " + std::to_string(nodeI.tag()) +
                         " and " + std::to_string(nodeJ.tag()) + " coincide");
   initialAxis_ = chord / initialLength_;
-  initialAngle_ = std::atan2(initialAxis_.y(), initialAxis_.x());
+  // Local from global of the undeformed configuration (LinearCrdTransf2d's).
+  const double c = initialAxis_.x(), s = initialAxis_.y();
+  initialLocalFromGlobal_.setZero();
+  for (int k = 0; k < 2; ++k) {
+    const Vector2& d = offset_[k];
+    initialLocalFromGlobal_.block<3, 3>(3 * k, 3 * k) << c, s, -c * d.y() + s * d.x(), -s, c, s * d.y() + c * d.x(),
+        0.0, 0.0, 1.0;
+  }
   update();
 }
 
@@ -100,24 +107,17 @@ CorotationalCrdTransf2d::Vector6 CorotationalCrdTransf2d::localResistingForce(co
   return basicToLocal(q, p0, length_);
 }
 
-CorotationalCrdTransf2d::Vector6 CorotationalCrdTransf2d::endForce(const Vector3& q, const Vector6& p0) const {
-  Vector6 f = basicFromEnd_.transpose() * q;
-  // p0 (the simple-support reactions of element loads) is turned to global
-  // with the initial axis, as OpenSees does: the loads keep their initial
-  // direction (a beam's gravity load stays vertical) and need no tangent.
-  const double c = initialAxis_.x(), s = initialAxis_.y();
-  for (int k = 0; k < 2; ++k) {
-    const double n = p0[3 * k], v = p0[3 * k + 1];
-    f[3 * k] += c * n - s * v;
-    f[3 * k + 1] += s * n + c * v;
-    f[3 * k + 2] += p0[3 * k + 2];
-  }
-  return f;
+CorotationalCrdTransf2d::Vector6 CorotationalCrdTransf2d::endForce(const Vector3& q) const {
+  return basicFromEnd_.transpose() * q;
 }
 
 CorotationalCrdTransf2d::Vector6 CorotationalCrdTransf2d::globalResistingForce(const Vector3& q,
                                                                                const Vector6& p0) const {
-  return endFromNode_.transpose() * endForce(q, p0);
+  // p0 (the simple-support reactions of element loads) goes to the nodes as
+  // in the Linear transformation, with the initial axis and arms, as OpenSees
+  // does: the loads keep their initial direction (a beam's gravity load
+  // stays vertical) and add nothing to the tangent.
+  return endFromNode_.transpose() * endForce(q) + initialLocalFromGlobal_.transpose() * p0;
 }
 
 CorotationalCrdTransf2d::Matrix6 CorotationalCrdTransf2d::globalStiffMatrix(const Matrix3& kb,
@@ -132,7 +132,7 @@ CorotationalCrdTransf2d::Matrix6 CorotationalCrdTransf2d::globalStiffMatrix(cons
     for (int b = 0; b < 2; ++b) k.block<2, 2>(3 * a, 3 * b) += (a == b ? 1.0 : -1.0) * geometric;
   Matrix6 global = endFromNode_.transpose() * k * endFromNode_;
   // The arm's turning: d/dtheta of (-arm_y fx + arm_x fy) = -(arm . f).
-  const Vector6 f = endForce(q, Vector6::Zero());
+  const Vector6 f = endForce(q);
   for (int e = 0; e < 2; ++e) global(3 * e + 2, 3 * e + 2) -= arm_[e].dot(f.segment<2>(3 * e));
   return global;
 }

@@ -21,9 +21,10 @@ namespace beamsolid {
 //   B^T kb B + N/Ln z z^T + (M_i + M_j)/Ln^2 (r z^T + z r^T) on the end
 //   translations (Crisfield's geometric stiffness), plus the rigid arms' term.
 //   Element loads: their basic forces q0 act through B like q, and the
-//   simple-support reactions p0 keep the directions of the initial local
-//   axes (as in OpenSeesPy 3.7.1: a uniform load on a horizontal cantilever
-//   stays vertical however far it bends), so they add nothing to the tangent.
+//   simple-support reactions p0 go to the nodes as in the Linear
+//   transformation, with the initial axes and arms (as in OpenSeesPy 3.7.1:
+//   a uniform load on a horizontal cantilever stays vertical however far it
+//   bends), so they add nothing to the tangent.
 class CorotationalCrdTransf2d : public CrdTransf2d {
  public:
   using Vector2 = Eigen::Vector2d;
@@ -54,15 +55,15 @@ class CorotationalCrdTransf2d : public CrdTransf2d {
 
  private:
   std::string context() const;
-  // Forces on the ends (translations global) from q and p0.
-  Vector6 endForce(const Vector3& q, const Vector6& p0) const;
+  // Forces on the ends (translations global) from q.
+  Vector6 endForce(const Vector3& q) const;
 
   Vector2 offset_[2];
   const Node* node_[2] = {nullptr, nullptr};  // not owned: the element's end nodes
 
   double initialLength_ = 0.0;
-  double initialAngle_ = 0.0;
   Vector2 initialAxis_ = Vector2::UnitX();
+  Matrix6 initialLocalFromGlobal_ = Matrix6::Identity();
 
   // Trial state.
   Vector2 arm_[2] = {Vector2::Zero(), Vector2::Zero()};
