@@ -76,12 +76,14 @@ def run(ops):
         ops.recorder("Element", "-file", f"{kind}_stress.out", "-time", "-ele", 2, "stresses")
         ops.recorder("Element", "-xml", f"{kind}_force.xml", "-ele", 6, "forces")
         ops.recorder("Element", "-xml", f"{kind}_mat.xml", "-ele", 6, "material", 2, "strain")
+        ops.recorder("Element", "-xml", f"{kind}_stresses.xml", "-ele", 6, "stresses")
+        ops.recorder("Element", "-xml", f"{kind}_strains.xml", "-ele", 6, "strains")
         out[kind + ".codes"], out[kind + ".testIter"] = _analyse(ops, 0.5, 2)
         _results(ops, out, kind + ".")
         ops.wipe()
         with open(f"{kind}_stress.out") as f:
             out[kind + ".recorder.stress"] = f.read()
-        for name in ("force", "mat"):
+        for name in ("force", "mat", "stresses", "strains"):
             with open(f"{kind}_{name}.xml") as f:
                 out[f"{kind}.recorder.{name}.names"] = re.findall(r"<ResponseType>(.*?)</ResponseType>", f.read())
 
