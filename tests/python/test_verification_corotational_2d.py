@@ -13,8 +13,9 @@
         3          0.25442            0.60325           0.98602
         5          0.38763            0.71379           1.21537
        10          0.55500            0.81061           1.43029
-  With 40 elements the error is below 2e-4 of L; the observed convergence
-  rate between 10, 20 and 40 elements is 2 (chord elements, error ~ h^2).
+  With 40 elements the error is at most 9.1e-5 (of L, or relative for the
+  rotation); the observed convergence rates between 10, 20 and 40 elements
+  are 1.99 and 1.91 (error ~ h^2).
 """
 import math
 
@@ -89,8 +90,8 @@ def elastica_tip(model, n, k):
 def test_tip_load_follows_the_elastica(model, k):
     tip = elastica_tip(model, 40, k)
     err = np.max(np.abs(tip - MATTIASSON[k]) / np.array([1.0, 1.0, MATTIASSON[k][2]]))
-    # Table values carry 5 digits (5e-6); the 40-element error is smaller than 2e-4.
-    assert err < 2e-4, f"PL^2/EI = {k}: {tip} vs {MATTIASSON[k]}"
+    # Table values carry 5 digits (5e-6); the 40-element error measured 9.1e-5 at most.
+    assert err < 1.5e-4, f"PL^2/EI = {k}: {tip} vs {MATTIASSON[k]}"
 
 
 def test_elastica_converges_at_second_order(model):
