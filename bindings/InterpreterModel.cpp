@@ -446,6 +446,13 @@ Result Interpreter::eleLoad(CommandArgs& a) {
         if (load.values.size() > 4) a.fail("-beamPoint takes Py, Pz, xL and optionally Px");
         load.values.resize(4, 0.0);
         if (load.values[2] < 0.0 || load.values[2] > 1.0) a.fail("-beamPoint xL must lie in [0, 1]");
+      } else if (planar && (type == "-selfWeight" || type == "selfWeight")) {
+        // 2D: factors on the element's b1, b2, and a bz OpenSees accepts and ignores.
+        load.type = ElementLoad::Type::SelfWeight;
+        load.values = a.nextDoubles("bx, by, <bz>", 2);
+        if (load.values.size() > 3) a.fail("-selfWeight takes bx, by (and an unused bz) in a 2D model");
+        load.values.resize(2);
+        load.values.push_back(0.0);
       } else if (type == "-selfWeight" || type == "selfWeight") {
         load.type = ElementLoad::Type::SelfWeight;
         load.values = a.nextDoubles("bx, by, bz", 3);

@@ -10,7 +10,7 @@ std::string openSeesClassName(const std::string& elementClassName) {
       {"corotTruss", "CorotTruss"},             {"zeroLength", "ZeroLength"},
       {"stdBrick", "Brick"},                    {"bbarBrick", "BbarBrick"},
       {"dispBeamColumn", "DispBeamColumn3d"},   {"forceBeamColumn", "ForceBeamColumn3d"},
-      {"nonlinearBeamColumn", "ForceBeamColumn3d"},
+      {"nonlinearBeamColumn", "ForceBeamColumn3d"}, {"quad", "FourNodeQuad"},
   };
   const auto it = table.find(elementClassName);
   return it == table.end() ? elementClassName : it->second;

@@ -218,7 +218,7 @@ std::unique_ptr<Element> ElasticBeam2d::build(CommandArgs& args, Domain& domain,
   auto transf = definition.planar();
   if (!transf)
     args.fail("geomTransf " + definition.className() + " " + std::to_string(transfTag) +
-              " has no 2D form yet (use 'Linear' or 'PDelta')");
+              " has no 2D form (use 'Linear', 'PDelta' or 'Corotational')");
   return std::make_unique<ElasticBeam2d>(tag, nodeI, nodeJ, p, std::move(transf));
 }
 

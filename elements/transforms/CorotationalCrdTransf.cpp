@@ -8,6 +8,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "elements/transforms/CorotationalCrdTransf2d.h"
 #include "elements/transforms/LinearCrdTransf.h"
 
 namespace beamsolid {
@@ -364,13 +365,18 @@ void CorotationalCrdTransf::print(std::ostream& os) const {
   os << '\n';
 }
 
+std::unique_ptr<CrdTransf2d> CorotationalCrdTransf::planar() const {
+  return std::make_unique<CorotationalCrdTransf2d>(tag(), offset_[0].head<2>(), offset_[1].head<2>());
+}
+
 namespace {
 
 std::unique_ptr<CrdTransf> buildCorotationalCrdTransf(CommandArgs& args, Domain& domain) {
-  if (domain.spaceDim() != 3)
-    args.fail("the Corotational transformation is implemented for 3D models only (-ndm 3); use 'Linear' or "
-              "'PDelta' in " + std::to_string(domain.spaceDim()) + "D");
-  const auto d = LinearCrdTransf::parse(args, "Corotational");
+  if (domain.spaceDim() != 3 && domain.spaceDim() != 2)
+    args.fail("the Corotational transformation needs a 2D or 3D model, this one has -ndm " +
+              std::to_string(domain.spaceDim()));
+  // In 2D: no vecxz (Z), and elements take the planar() form.
+  const auto d = LinearCrdTransf::parse(args, "Corotational", domain.spaceDim());
   return std::make_unique<CorotationalCrdTransf>(d.tag, d.vecxz, d.jointOffsetI, d.jointOffsetJ);
 }
 

@@ -74,6 +74,8 @@ class CorotationalCrdTransf : public CrdTransf {
   const Vector3& localRotation(int end) const { return trial_.theta[end]; }
 
   void print(std::ostream& os) const override;
+  // In a 2D model: CorotationalCrdTransf2d with the offsets' x, y.
+  std::unique_ptr<CrdTransf2d> planar() const override;
 
  private:
   // Everything that depends on the trial configuration, kept together so

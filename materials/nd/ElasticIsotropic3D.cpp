@@ -4,6 +4,7 @@
 #include "core/Domain.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "materials/nd/ElasticIsotropic2D.h"
 
 namespace beamsolid {
 
@@ -39,8 +40,13 @@ void ElasticIsotropic3D::formTangent() {
 }
 
 std::unique_ptr<NDMaterial> ElasticIsotropic3D::clone(const std::string& kind) const {
-  if (kind != "ThreeDimensional") return nullptr;
-  return std::make_unique<ElasticIsotropic3D>(*this);
+  if (kind == "ThreeDimensional") return std::make_unique<ElasticIsotropic3D>(*this);
+  // Quad elements ask for the plane forms, as in OpenSees.
+  if (kind == "PlaneStrain")
+    return std::make_unique<ElasticIsotropic2D>(tag(), ElasticIsotropic2D::Plane::Strain, E_, nu_, rho_);
+  if (kind == "PlaneStress")
+    return std::make_unique<ElasticIsotropic2D>(tag(), ElasticIsotropic2D::Plane::Stress, E_, nu_, rho_);
+  return nullptr;
 }
 
 void ElasticIsotropic3D::setTrialStrain(const Eigen::Ref<const Vector>& strain) {

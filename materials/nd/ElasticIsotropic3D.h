@@ -14,7 +14,8 @@ class ElasticIsotropic3D : public NDMaterial {
   ElasticIsotropic3D(int tag, double E, double nu, double rho);
 
   std::string className() const override { return "ElasticIsotropic3D"; }
-  // Only "ThreeDimensional" (a copy); nullptr for any other kind.
+  // "ThreeDimensional" (a copy), "PlaneStrain" or "PlaneStress" (an
+  // ElasticIsotropic2D); nullptr for any other kind.
   std::unique_ptr<NDMaterial> clone(const std::string& kind) const override;
 
   void setTrialStrain(const Eigen::Ref<const Vector>& strain) override;

@@ -82,14 +82,36 @@ TEST(ElasticIsotropic, FiniteDifferenceTangent) {
   EXPECT_LE((fd - Matrix(m->tangent())).cwiseAbs().maxCoeff(), 1e-7 * E);
 }
 
-TEST(ElasticIsotropic, ClonesOnlyForThreeDimensionalUse) {
+TEST(ElasticIsotropic, ClonesForThreeDimensionalAndPlaneUse) {
   auto m = build(args("nDMaterial", 7, 100.0, 0.25, 1.8));
   auto c = m->clone("ThreeDimensional");
   ASSERT_NE(c, nullptr);
   EXPECT_EQ(c->tag(), 7);
   EXPECT_DOUBLE_EQ(c->density(), 1.8);
   EXPECT_EQ(Matrix(c->tangent()), Matrix(m->tangent()));
-  EXPECT_EQ(m->clone("PlaneStrain"), nullptr);
+  // The plane forms are the 3D law with e33 = 0 (strain) or s33 = 0 (stress).
+  auto strain = m->clone("PlaneStrain");
+  auto stress = m->clone("PlaneStress");
+  ASSERT_NE(strain, nullptr);
+  ASSERT_NE(stress, nullptr);
+  EXPECT_EQ(strain->className(), "ElasticIsotropicPlaneStrain2D");
+  EXPECT_DOUBLE_EQ(stress->density(), 1.8);
+  const Matrix D3 = m->tangent();
+  const int inPlane[3] = {0, 1, 3};  // xx, yy, xy of the Voigt 6-vector
+  Matrix condensed = D3;
+  // Static condensation of s33 = 0: D_ab - D_a3 D_3b / D_33.
+  for (int a = 0; a < 6; ++a)
+    for (int b = 0; b < 6; ++b) condensed(a, b) = D3(a, b) - D3(a, 2) * D3(2, b) / D3(2, 2);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      EXPECT_NEAR(Matrix(strain->tangent())(a, b), D3(inPlane[a], inPlane[b]), 1e-12 * D3(0, 0));
+      EXPECT_NEAR(Matrix(stress->tangent())(a, b), condensed(inPlane[a], inPlane[b]), 1e-12 * D3(0, 0));
+    }
+  Vector e(3);
+  e << 1e-3, -2e-4, 5e-4;
+  strain->setTrialStrain(e);
+  EXPECT_LT((Vector(strain->stress()) - Matrix(strain->tangent()) * e).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_EQ(stress->clone("PlaneStrain"), nullptr);
   EXPECT_EQ(m->clone("ContactMaterial3D"), nullptr);
   EXPECT_DOUBLE_EQ(build(args("nDMaterial", 8, 100.0, 0.25))->density(), 0.0);
 }

@@ -458,8 +458,8 @@ def test_geomtransf_with_vecxz_in_2d_is_refused(model):
         model.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
     with pytest.raises(beamsolid.OpenSeesError, match=r"-jntOffset needs 4 numbers in 2D"):
         model.geomTransf("PDelta", 2, "-jntOffset", 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    with pytest.raises(beamsolid.OpenSeesError, match=r"Corotational .* 3D models only"):
-        model.geomTransf("Corotational", 3)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"geomTransf Corotational 3: vecxz is for 3D models"):
+        model.geomTransf("Corotational", 3, 0.0, 0.0, 1.0)
 
 
 def test_beam_on_ndf2_nodes_is_refused(model):
@@ -513,3 +513,49 @@ def test_pvd_recorder_pads_2d_models_to_3d(model, tmp_path):
     expected = np.zeros(12)
     expected[[0, 1, 5, 6, 7, 11]] = local
     assert_close(np.concatenate(grid.cell_data["localForce"])[0], expected, 1e-14)
+
+
+# --- quad (plane strain / plane stress) input errors ------------------------------
+
+def quad_model(model, ndf=2):
+    model.model("basic", "-ndm", 2, "-ndf", ndf)
+    for i, (x, y) in enumerate([(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]):
+        model.node(i + 1, x, y)
+    model.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.25)
+
+
+@pytest.mark.parametrize("args, fragments", [
+    ((1, 2, 3, 1.0, "PlaneStrain", 1), ["element quad 5", "4 node tags and thick"]),
+    ((1, 2, 3, 4, 1, 1.0, "PlaneStrain", 1), ["element quad 5", "exactly 4 nodes"]),
+    ((1, 2, 3, 4, 1.0, "PlaneStrian", 1), ["element quad 5", "(type)", "'PlaneStrain' or 'PlaneStress'"]),
+    ((1, 2, 3, 4, 1.0, "PlaneStrain", 9), ["element quad 5", "nDMaterial 9 does not exist"]),
+    ((1, 2, 3, 99, 1.0, "PlaneStrain", 1), ["node 99 does not exist"]),
+    ((1, 4, 3, 2, 1.0, "PlaneStrain", 1), ["element quad 5", "Jacobian", "counterclockwise"]),
+    ((1, 2, 3, 4, 0.0, "PlaneStrain", 1), ["element quad 5", "(thick)", "positive"]),
+    ((1, 2, 3, 4, 1.0, "PlaneStrain", 1, 0.0, 0.0, 1.0, 2.0, 3.0), ["element quad 5", "at most 4"]),
+])
+def test_quad_bad_input_is_refused_by_name(model, args, fragments):
+    quad_model(model)
+    with pytest.raises(beamsolid.OpenSeesError) as info:
+        model.element("quad", 5, *args)
+    for f in fragments:
+        assert f in str(info.value), str(info.value)
+
+
+def test_quad_needs_a_2d_model_with_ndf_2(model):
+    quad_model(model, ndf=3)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"element quad 5: node 1 has ndm 2 and ndf 3"):
+        model.element("quad", 5, 1, 2, 3, 4, 1.0, "PlaneStress", 1)
+    model.wipe()
+    model.model("basic", "-ndm", 3, "-ndf", 3)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"element quad 5: quad is a 2D element.*-ndm 3"):
+        model.element("quad", 5, 1, 2, 3, 4, 1.0, "PlaneStress", 1)
+    model.wipe()
+    quad_model(model)
+    model.element("quad", 5, 1, 2, 3, 4, 1.0, "PlaneStress", 1)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"element 5 already exists"):
+        model.element("quad", 5, 1, 2, 3, 4, 1.0, "PlaneStress", 1)
+    model.timeSeries("Linear", 1)
+    model.pattern("Plain", 1, 1)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"eleLoad: .*\(bx, by, <bz>\): expected at least 2"):
+        model.eleLoad("-ele", 5, "-type", "-selfWeight", 1.0)

@@ -22,4 +22,6 @@ SCRIPTS = (
     "beam_contact",
     "frames_2d",
     "analysis_idioms",
+    "quad_mesh",
+    "corotational_2d",
 )
