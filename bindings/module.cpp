@@ -8,6 +8,7 @@
 #include "bindings/Interpreter.h"
 #include "bindings/PythonElement.h"
 #include "core/BlasKernel.h"
+#include "core/LogFile.h"
 #include "core/PluginAbi.h"
 #include "elements/TangentCheck.h"
 #include "core/OpenSeesError.h"
@@ -89,6 +90,7 @@ PYBIND11_MODULE(_beamsolid, m) {
           py::arg("eleTag"), py::arg("h"));
 
   m.def("command_names", &Interpreter::commandNames);
+  m.def("close_log_file", &beamsolid::LogFile::close, "Stop copying warnings to the logFile and close it.");
   m.def("register_element", &beamsolid::PythonElement::registerType, py::arg("name"), py::arg("factory"),
         "Register a Python element class (a beamsolid.Element subclass) as element type `name`.");
   // registered_types(kind): the type names of one kind; registered_types():
