@@ -24,4 +24,5 @@ SCRIPTS = (
     "analysis_idioms",
     "quad_mesh",
     "corotational_2d",
+    "constraints_and_queries",
 )
