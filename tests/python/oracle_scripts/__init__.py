@@ -21,4 +21,6 @@ SCRIPTS = (
     "zerolength_contact",
     "beam_contact",
     "frames_2d",
+    "spring_chain_1d",
+    "nonlinear_truss_2d",
 )
