@@ -17,7 +17,8 @@ class MinMaxMaterial : public UniaxialMaterial {
   std::unique_ptr<UniaxialMaterial> clone() const override;
 
   void setTrialStrain(double strain, double strainRate = 0.0) override;
-  double strain() const override { return strain_; }
+  // After failure, the other material's last strain (as OpenSees reports).
+  double strain() const override { return trialFailed_ ? other_->strain() : strain_; }
   double stress() const override;
   double tangent() const override;
   double initialTangent() const override { return other_->initialTangent(); }

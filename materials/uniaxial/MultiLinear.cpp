@@ -27,6 +27,13 @@ MultiLinear::MultiLinear(int tag, const std::vector<double>& strains, const std:
 std::unique_ptr<UniaxialMaterial> MultiLinear::clone() const { return std::make_unique<MultiLinear>(*this); }
 
 void MultiLinear::setTrialStrain(double strain, double) {
+  // The committed strain again keeps the committed state: a spring that
+  // stopped on its yield limit would otherwise look elastic (tangent too stiff
+  // for the next Newton step; OpenSees keeps the yielding tangent).
+  if (strain == committedStrain_) {
+    revertToLastCommit();
+    return;
+  }
   trialStrain_ = strain;
   trialStress_ = elasticStiffness_ * strain;
   trialTangent_ = elasticStiffness_;
@@ -58,12 +65,11 @@ void MultiLinear::revertToLastCommit() {
 }
 
 void MultiLinear::revertToStart() {
-  committedStrain_ = 0.0;
+  committedStrain_ = trialStrain_ = 0.0;
   committedSlip_.assign(stiffness_.size(), 0.0);
   trialSlip_ = committedSlip_;
-  setTrialStrain(0.0);
-  committedStress_ = trialStress_;
-  committedTangent_ = trialTangent_;
+  committedStress_ = trialStress_ = 0.0;
+  committedTangent_ = trialTangent_ = initialTangent_;
 }
 
 void MultiLinear::print(std::ostream& os) const {

@@ -72,11 +72,13 @@ TEST(ElasticMultiLinear, LoadsAndUnloadsOnTheCurve) {
   Domain d;
   auto m = build(d, "ElasticMultiLinear",
                  args("uniaxialMaterial", 1, "-strain", -2.0, -1.0, 0.0, 1.0, 3.0, "-stress", -3.0, -2.0, 0.0, 1.0, 2.0));
-  // Slopes 1, 2, 1, 0.5, the end ones continued; a point takes the segment below.
-  const double strain[] = {-3.0, -1.5, -0.5, 0.0, 0.5, 2.0, 4.0, 0.5, -3.0};
-  const double stress[] = {-4.0, -2.5, -1.0, 0.0, 0.5, 1.5, 2.5, 0.5, -4.0};
-  const double tangent[] = {1.0, 1.0, 2.0, 2.0, 1.0, 0.5, 0.5, 1.0, 1.0};
-  for (int i = 0; i < 9; ++i) {
+  // Slopes 1, 2, 1, 0.5, the end ones continued. On a point (strain 0) the
+  // tangent is that of the segment above when reached from below, and of the
+  // segment below when reached from past the next point (OpenSees' choice).
+  const double strain[] = {-3.0, -1.5, -0.5, 0.0, 0.5, 2.0, 4.0, 0.0, 0.5, -3.0};
+  const double stress[] = {-4.0, -2.5, -1.0, 0.0, 0.5, 1.5, 2.5, 0.0, 0.5, -4.0};
+  const double tangent[] = {1.0, 1.0, 2.0, 1.0, 1.0, 0.5, 0.5, 2.0, 1.0, 1.0};
+  for (int i = 0; i < 10; ++i) {
     m->setTrialStrain(strain[i]);
     m->commitState();
     EXPECT_DOUBLE_EQ(m->stress(), stress[i]) << strain[i];

@@ -138,7 +138,8 @@ def _beamsolid_run(mat, strains, others):
     rows = []
     for e in strains:
         m.setStrain(e)
-        assert m.getStrain() == pytest.approx(e, abs=1e-15)
+        if mat[0] != "MinMax":  # a failed MinMax reports its last strain before failure
+            assert m.getStrain() == pytest.approx(e, abs=1e-15)
         rows.append((m.getStress(), m.getTangent()))
     m.wipe()
     return np.array(rows)
