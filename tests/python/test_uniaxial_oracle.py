@@ -84,6 +84,13 @@ def _cases():
     parts = [("Elastic", 11, 100000.0), ("Steel01", 12, fy, E0, b), ("Hardening", 13, E0, 0.9 * fy, 1000.0, 1500.0),
              ("Elastic", 14, 50000.0)]
     ml = _history([0.0015, -0.001, 0.004, 0.0025, 0.0035, -0.006, -0.0045, -0.005, 0.008, -0.002, 0.0], 2.5e-4, rng)
+    # Hysteretic: a spring in force-deformation units, asymmetric trilinear
+    # envelope; several cycles growing to the third branch and back.
+    hyst_path = _history([0.02, -0.015, 0.04, 0.01, 0.03, -0.05, -0.02, -0.04, 0.07, -0.08, 0.0, 0.05, -0.03,
+                          0.09, -0.1, 0.02], 0.002, rng)
+    env3 = (10.0, 0.01, 15.0, 0.03, 18.0, 0.08, -12.0, -0.012, -16.0, -0.035, -17.0, -0.09)
+    env2 = (10.0, 0.01, 15.0, 0.03, -12.0, -0.012, -16.0, -0.035)
+    soft = (10.0, 0.01, 15.0, 0.03, 5.0, 0.06, -12.0, -0.012, -16.0, -0.035, -4.0, -0.07)
     out = {
         "Steel01": (("Steel01", 1, fy, E0, b), steel),
         "Steel01-iso": (("Steel01", 1, fy, E0, b, 0.04, 2.0, 0.03, 1.5), steel),
@@ -108,6 +115,14 @@ def _cases():
         "MinMax": (("MinMax", 1, 12, "-min", -6.0 * ey, "-max", 7.0 * ey), steel),
         "InitStrainMaterial": (("InitStrainMaterial", 1, 12, 0.6 * ey), steel),
         "InitStressMaterial": (("InitStressMaterial", 1, 13, 150.0), steel),
+        "Hysteretic": (("Hysteretic", 1, *env3, 1.0, 1.0, 0.0, 0.0), hyst_path),
+        "Hysteretic-pinching": (("Hysteretic", 1, *env3, 0.5, 0.3, 0.0, 0.0, 0.0), hyst_path),
+        "Hysteretic-beta": (("Hysteretic", 1, *env3, 1.0, 1.0, 0.0, 0.0, 0.5), hyst_path),
+        "Hysteretic-ductility-damage": (("Hysteretic", 1, *env3, 1.0, 1.0, 0.1, 0.0), hyst_path),
+        "Hysteretic-energy-damage": (("Hysteretic", 1, *env3, 1.0, 1.0, 0.0, 0.1), hyst_path),
+        "Hysteretic-all": (("Hysteretic", 1, *env3, 0.6, 0.2, 0.05, 0.05, 0.3), hyst_path),
+        "Hysteretic-two-points": (("Hysteretic", 1, *env2, 0.7, 0.4, 0.02, 0.03, 0.2), hyst_path),
+        "Hysteretic-softening": (("Hysteretic", 1, *soft, 0.8, 0.5, 0.01, 0.01, 0.1), hyst_path),
     }
     return {name: (mat, strains, parts if name in _COMPOSITES else []) for name, (mat, strains) in out.items()}
 
