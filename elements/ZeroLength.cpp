@@ -26,13 +26,16 @@ ZeroLength::ZeroLength(int tag, int iNode, int jNode, const std::vector<const Un
   }
 }
 
-Matrix3 ZeroLength::axesFromOrientation(const Vector3& x, const Vector3& yp, const std::string& context) {
+Matrix3 ZeroLength::axesFromOrientation(const Vector3& x, const Vector3& givenYp, const std::string& context,
+                                        int ndm) {
   const double xNorm = x.norm();
   if (!(xNorm > 0.0)) throw OpenSeesError(context + ": -orient: the x vector has zero length");
+  const Vector3 yp = ndm < 3 ? Vector3(-x(1), x(0), 0.0) : givenYp;
   const Vector3 z = x.cross(yp);
   const double zNorm = z.norm();
   if (!(zNorm > 1e-12 * xNorm * yp.norm()) || !(zNorm > 0.0))
-    throw OpenSeesError(context + ": -orient: the yp vector is zero or parallel to x");
+    throw OpenSeesError(context + (ndm < 3 ? ": -orient: the x vector has no component in the model's plane"
+                                           : ": -orient: the yp vector is zero or parallel to x"));
   Matrix3 axes;
   axes.row(0) = x / xNorm;
   axes.row(2) = z / zNorm;
@@ -40,26 +43,49 @@ Matrix3 ZeroLength::axesFromOrientation(const Vector3& x, const Vector3& yp, con
   return axes;
 }
 
-void ZeroLength::setDomain(Domain&) {
+void ZeroLength::setDomain(Domain& domain) {
+  const int ndm = domain.spaceDim();
+  // Translational and rotational dofs per node of each space.
+  const int translations = ndm, rotations = ndm == 2 ? 1 : (ndm == 3 ? 3 : 0);
   for (Node* n : nodes())
-    if (n->ndf() != 3 && n->ndf() != 6)
+    if (n->ndf() != translations && n->ndf() != translations + rotations)
       throw OpenSeesError(context() + ": node " + std::to_string(n->tag()) + " has " + std::to_string(n->ndf()) +
-                          " dofs; zeroLength in 3D needs nodes with ndf 3 or 6");
+                          " dofs; zeroLength in " + std::to_string(ndm) + "D needs nodes with ndf " +
+                          (rotations ? std::to_string(translations) + " or " + std::to_string(translations + rotations)
+                                     : std::to_string(translations)));
   const int jOffset = nodes()[0]->ndf();
   const int n = numDOF();
   for (Spring& s : springs_) {
-    const bool rotation = s.direction > 3;
+    // In 2D direction 3 is the in-plane rotation, as 6 is (OpenSees).
+    const bool rotation = s.direction > 3 || (ndm == 2 && s.direction == 3);
+    const int axisRow = ndm == 2 && s.direction == 3 ? 2 : (s.direction - 1) % 3;
+    if (!rotation && s.direction > ndm)
+      throw OpenSeesError(context() + ": direction " + std::to_string(s.direction) + " is not a translation of a " +
+                          std::to_string(ndm) + "D model (directions 1-" + std::to_string(ndm) +
+                          (ndm == 2 ? ", and 3 for the rotation)" : ")"));
     if (rotation)
       for (Node* node : nodes())
-        if (node->ndf() != 6)
+        if (node->ndf() != translations + rotations || rotations == 0)
           throw OpenSeesError(context() + ": direction " + std::to_string(s.direction) +
                               " is a rotation, but node " + std::to_string(node->tag()) + " has ndf " +
-                              std::to_string(node->ndf()) + " (rotational directions 4-6 need ndf 6 at both nodes)");
-    const int first = rotation ? 3 : 0;
-    const Vector3 axis = localAxes_.row((s.direction - 1) % 3).transpose();
+                              std::to_string(node->ndf()) +
+                              (ndm == 3 ? " (rotational directions 4-6 need ndf 6 at both nodes)"
+                               : ndm == 2 ? " (the rotation, direction 3, needs ndf 3 at both nodes)"
+                                          : " (a 1D model has no rotations)"));
+    const Vector3 axis = localAxes_.row(axisRow).transpose();
     s.gradient.setZero(n);
-    s.gradient.segment<3>(first) = -axis;
-    s.gradient.segment<3>(jOffset + first) = axis;
+    if (ndm == 3) {
+      const int first = rotation ? 3 : 0;
+      s.gradient.segment<3>(first) = -axis;
+      s.gradient.segment<3>(jOffset + first) = axis;
+    } else if (rotation) {
+      // The plane's only rotation is about global Z.
+      s.gradient(ndm) = -axis(2);
+      s.gradient(jOffset + ndm) = axis(2);
+    } else {
+      s.gradient.head(ndm) = -axis.head(ndm);
+      s.gradient.segment(jOffset, ndm) = axis.head(ndm);
+    }
   }
   displacement_.setZero(n);
   velocity_.setZero(n);
@@ -194,6 +220,7 @@ std::unique_ptr<Element> buildZeroLength(CommandArgs& args, Domain& domain) {
   const int jNode = args.nextInt("jNode");
   std::vector<int> matTags, dirs;
   Matrix3 axes = Matrix3::Identity();
+  const int ndm = domain.spaceDim();
   bool doRayleigh = false;
   while (!args.done()) {
     if (args.nextFlag("-mat")) {
@@ -206,7 +233,8 @@ std::unique_ptr<Element> buildZeroLength(CommandArgs& args, Domain& domain) {
       const std::size_t at = args.position();
       const std::vector<double> v = args.nextDoubles("orientation vectors x and yp", 6);
       if (v.size() != 6) args.failAt(at + 6, "orientation vectors x and yp", "exactly 6 numbers (x1 x2 x3 yp1 yp2 yp3)");
-      axes = ZeroLength::axesFromOrientation(Vector3(v[0], v[1], v[2]), Vector3(v[3], v[4], v[5]), args.context());
+      axes = ZeroLength::axesFromOrientation(Vector3(v[0], v[1], v[2]), Vector3(v[3], v[4], v[5]), args.context(),
+                                            ndm);
     } else {
       args.failAt(args.position(), "option", "'-mat', '-dir', '-doRayleigh' or '-orient'");
     }

@@ -9,11 +9,18 @@ namespace beamsolid {
 
 // element('zeroLength', tag, i, j, '-mat', *matTags, '-dir', *dirs,
 //         <'-doRayleigh', r>, <'-orient', x1, x2, x3, yp1, yp2, yp3>):
-// uncoupled uniaxial springs between two nodes. Direction 1-3 is a
-// translation along local x, y, z, 4-6 a rotation about them (both nodes
-// then need ndf 6). Local axes: x from -orient, z = x cross yp, y = z cross x;
-// global axes by default. A spring's deformation is the local component of
-// (u_j - u_i); its force pushes node j along +axis and node i along -axis.
+// uncoupled uniaxial springs between two nodes, in 1D, 2D and 3D models.
+// Direction 1-3 is a translation along local x, y, z, 4-6 a rotation about
+// them; a spring sees the components of its axis in the model's space:
+//   3D: nodes of ndf 3 or 6, rotations (4-6) need ndf 6 at both nodes;
+//   2D: nodes of ndf 2 or 3, directions 1, 2 translations, 3 (or 6) the
+//       in-plane rotation (ndf 3 at both nodes), as OpenSees;
+//   1D: nodes of ndf 1, direction 1.
+// Local axes: x from -orient, z = x cross yp, y = z cross x; global axes by
+// default. In 1D and 2D OpenSees ignores the given yp and takes
+// yp = (-x2, x1, 0), so y stays in the plane; we do the same.
+// A spring's deformation is the local component of (u_j - u_i); its force
+// pushes node j along +axis and node i along -axis.
 class ZeroLength : public Element {
  public:
   static constexpr int kMaxDofs = 12;
@@ -25,6 +32,7 @@ class ZeroLength : public Element {
              const std::vector<int>& directions, const Matrix3& localAxes, bool doRayleigh);
 
   std::string className() const override { return "zeroLength"; }
+  bool supportsSpace(int ndm) const override { return ndm >= 1 && ndm <= 3; }
 
   void update() override;
   MatrixView tangentStiff() override;
@@ -50,7 +58,8 @@ class ZeroLength : public Element {
   bool doRayleigh() const { return doRayleigh_; }
   // Builds the local axes from -orient vectors; throws (naming `context`) if
   // x is zero or parallel to yp.
-  static Matrix3 axesFromOrientation(const Vector3& x, const Vector3& yp, const std::string& context);
+  // In a model of ndm < 3, yp is replaced by (-x2, x1, 0) (see above).
+  static Matrix3 axesFromOrientation(const Vector3& x, const Vector3& yp, const std::string& context, int ndm = 3);
 
  protected:
   void setDomain(Domain& domain) override;
@@ -58,7 +67,7 @@ class ZeroLength : public Element {
  private:
   struct Spring {
     std::unique_ptr<UniaxialMaterial> material;
-    int direction;  // 1..6
+    int direction;  // 1..6 as given
     // deformation = gradient . element displacement vector
     ForceVector gradient;
   };

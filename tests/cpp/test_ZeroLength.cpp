@@ -189,3 +189,44 @@ TEST(ZeroLength, InputErrorsAreClear) {
   EXPECT_EQ(d.findElement(6)->numDOF(), 9);
   EXPECT_FALSE(d.findElement(6)->setResponse({"material", "2", "stress"}));
 }
+
+TEST(ZeroLength, PlaneSpringsSeeTheInPlaneAxesAndTheRotation) {
+  // 2D, ndf 3, -orient x = (3, 4, 0) (yp ignored): local x = (0.6, 0.8),
+  // y = (-0.8, 0.6); direction 3 is the rotation. Forces by hand.
+  Domain d;
+  d.setModelSpace(2, 3);
+  addNode(d, 1, 3, 0.0, 0.0, 0.0);
+  addNode(d, 2, 3, 0.0, 0.0, 0.0);
+  addUniaxialMaterial(d, "Elastic", 1, 100.0);
+  addUniaxialMaterial(d, "Elastic", 2, 40.0);
+  addUniaxialMaterial(d, "Hardening", 3, 10.0, 0.05, 1.0, 2.0);
+  Element& e = addElement(d, "zeroLength", 1, 1, 2, "-mat", std::vector<int>{1, 2, 3}, "-dir",
+                          std::vector<int>{1, 2, 3}, "-orient", 3.0, 4.0, 0.0, 0.0, 0.0, 1.0);
+  d.findNode(2)->setTrialDisp(0, 0.02);
+  d.findNode(2)->setTrialDisp(1, -0.01);
+  d.findNode(2)->setTrialDisp(2, 0.03);  // past the rotational spring's yield (0.005)
+  e.update();
+  const double dx = 0.6 * 0.02 + 0.8 * -0.01, dy = -0.8 * 0.02 + 0.6 * -0.01;
+  const double fx = 100.0 * dx, fy = 40.0 * dy;
+  const double H = 3.0, m = 0.05 + 10.0 * H / (10.0 + H) * (0.03 - 0.005);
+  const Vector f = e.resistingForce();
+  const double expected[6] = {-(0.6 * fx - 0.8 * fy), -(0.8 * fx + 0.6 * fy), -m, 0.6 * fx - 0.8 * fy,
+                              0.8 * fx + 0.6 * fy, m};
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(f(k), expected[k], 1e-14) << k;
+  EXPECT_LE(checkTangent(e, 1e-7).relativeError(), 1e-7);
+}
+
+TEST(ZeroLength, OneDimensionalSpringTakesTheXComponentOfItsAxis) {
+  Domain d;
+  d.setModelSpace(1, 1);
+  addNode(d, 1, 1, 0.0, 0.0, 0.0);
+  addNode(d, 2, 1, 0.0, 0.0, 0.0);
+  addUniaxialMaterial(d, "Elastic", 1, 50.0);
+  Element& e = addElement(d, "zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1, "-orient", -2.0, 0.0, 0.0, 0.0, 1.0, 0.0);
+  d.findNode(2)->setTrialDisp(0, 0.1);
+  e.update();
+  const Vector f = e.resistingForce();
+  EXPECT_DOUBLE_EQ(f(1), 5.0);  // reversed axis: deformation -0.1, force -5 along -x
+  EXPECT_DOUBLE_EQ(f(0), -5.0);
+  EXPECT_DOUBLE_EQ(dynamic_cast<ZeroLength&>(e).material(0).strain(), -0.1);
+}

@@ -25,4 +25,6 @@ SCRIPTS = (
     "quad_mesh",
     "corotational_2d",
     "constraints_and_queries",
+    "spring_chain_1d",
+    "nonlinear_truss_2d",
 )
