@@ -25,7 +25,9 @@ using Vector4 = SectionForceDeformation::Vector4;
 using Matrix4 = SectionForceDeformation::Matrix4;
 constexpr double kPi = std::numbers::pi;
 
-SectionForceDeformation& sectionOf(Script& s, int tag) { return s.interp.domain().sections.get(tag, "test"); }
+SectionForceDeformation& sectionOf(Script& s, int tag) {
+  return dynamic_cast<SectionForceDeformation&>(s.interp.domain().sections.get(tag, "test"));
+}
 FiberSection3d& fiberSectionOf(Script& s, int tag) { return dynamic_cast<FiberSection3d&>(sectionOf(s, tag)); }
 
 void model3d(Script& s) { s("model", "basic", "-ndm", 3, "-ndf", 6); }

@@ -21,4 +21,8 @@ SCRIPTS = (
     "zerolength_contact",
     "beam_contact",
     "frames_2d",
+    "moment_curvature",
+    "rc_frame_2d",
+    "steel_frame_wf",
+    "aggregator_2d",
 )
