@@ -99,19 +99,22 @@ bool ForceBeamColumn2d::iterate(const Vector3& v) {
     const double work = std::fabs(dq.dot(dv)) + sectionWork;
     if (!std::isfinite(work)) return false;
     if (iteration == 0) reference = work;
-    // A changed v is always applied once, however small: the global Newton
-    // iteration relies on the element following every increment.
-    if ((iteration > 0 || work == 0.0) && work <= options().tolerance * std::max(reference, std::fabs(q_.dot(v)))) {
-      kb_ = flexibility.solve(Matrix3::Identity());
-      return true;
-    }
-    if (iteration >= options().maxIterations) return false;
+    // The correction is applied before the test (as in OpenSees): the
+    // element always follows a changed v, and the q it answers with carries
+    // the last correction, so Newton keeps its quadratic rate. tol bounds the
+    // work of the residuals itself (force x length in the model's units), as
+    // OpenSees' tol; the ratio 1e-28 only ends iterations on round-off.
     ++lastIterations_;
     q_ += dq;
     for (int i = 0; i < n; ++i) {
       const SectionVector de = flexibility_[i] * (unbalance_[i] + interpolation_[i] * dq);
       sections_[i]->setTrialDeformation(sections_[i]->deformation() + de);
     }
+    if (work <= options().tolerance || work <= 1e-28 * std::max(reference, std::fabs(q_.dot(v)))) {
+      kb_ = flexibility.solve(Matrix3::Identity());
+      return true;
+    }
+    if (iteration + 1 >= options().maxIterations) return false;
   }
 }
 
