@@ -38,11 +38,10 @@ void ElasticSection2d::print(std::ostream& os) const {
 
 std::unique_ptr<ElasticSection2d> ElasticSection2d::build(CommandArgs& args, int tag) {
   const std::size_t numbers = args.remaining();
-  if (numbers == 6 || numbers == 8)
-    args.fail("the 3D form (E, A, Iz, Iy, G, J) needs a 3D model (-ndm 3); in 2D give E, A, Iz, <G, alphaY>");
   if (numbers != 3 && numbers != 5)
     args.fail("expected E, A, Iz (3 numbers) or E, A, Iz, G, alphaY (5) after the tag in a 2D model, got " +
-              std::to_string(numbers));
+              std::to_string(numbers) +
+              (numbers == 6 || numbers == 8 ? " (the 3D form E, A, Iz, Iy, G, J needs a 3D model, -ndm 3)" : ""));
   Properties p;
   struct Positive {
     double* value;

@@ -323,7 +323,7 @@ def test_2d_section_command_errors(ops):
         ops.section("WFSection2d", 6, 1, 10.0, 1.0, 6.0, -2.0, 3, 2)
     with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 7.*uniaxialMaterial 9 does not exist"):
         ops.section("WFSection2d", 7, 9, 10.0, 1.0, 6.0, 2.0, 3, 2)
-    with pytest.raises(beamsolid.OpenSeesError, match=r"section Elastic 8.*3D form"):
+    with pytest.raises(beamsolid.OpenSeesError, match=r"section Elastic 8: expected E, A, Iz.*got 6 \(the 3D form"):
         ops.section("Elastic", 8, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0)
     ops.section("Elastic", 9, 29000.0, 20.0, 800.0, 11200.0, 0.8)
     ops.node(1, 0.0, 0.0)
