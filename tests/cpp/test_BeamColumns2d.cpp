@@ -121,6 +121,43 @@ TEST(FiberSection2d, CopiesAndCommitRevertAreIndependent) {
   EXPECT_EQ(copy->force().norm(), 0.0);
 }
 
+TEST(ElasticSection2d, DiagonalStiffnessWithAndWithoutShear) {
+  Script s;
+  model2d(s);
+  s("section", "Elastic", 1, 200.0, 3.0, 5.0);
+  s("section", "Elastic", 2, 200.0, 3.0, 5.0, 80.0, 0.5);
+  auto& plain = dynamic_cast<SectionForceDeformation2d&>(sectionOf(s, 1));
+  auto& shear = dynamic_cast<SectionForceDeformation2d&>(sectionOf(s, 2));
+  ASSERT_EQ(plain.order(), 2);
+  ASSERT_EQ(shear.order(), 3);
+  SVector e(3);
+  e << 1e-3, -2e-3, 4e-3;
+  shear.setTrialDeformation(e);
+  EXPECT_DOUBLE_EQ(shear.force()[0], 600.0 * 1e-3);
+  EXPECT_DOUBLE_EQ(shear.force()[1], 1000.0 * -2e-3);
+  EXPECT_DOUBLE_EQ(shear.force()[2], 0.5 * 80.0 * 3.0 * 4e-3);  // alphaY G A gamma
+  EXPECT_THROW(s("section", "Elastic", 3, 200.0, 3.0, 5.0, 80.0), OpenSeesError);
+  EXPECT_THROW(s("section", "Elastic", 4, 200.0, -3.0, 5.0), OpenSeesError);
+}
+
+TEST(WFSection2d, FibersAreMidHeightStrips) {
+  Script s;
+  model2d(s);
+  s("uniaxialMaterial", "Elastic", 1, 1.0);
+  s("section", "WFSection2d", 1, 1, 12.0, 0.5, 8.0, 1.0, 5, 4);
+  auto& wf = dynamic_cast<FiberSection2d&>(sectionOf(s, 1));
+  ASSERT_EQ(wf.numFibers(), 4u + 5u + 4u);
+  EXPECT_EQ(wf.className(), "WFSection2d");
+  // Exact area; the midpoint strips give I = sum of strip I's about their own
+  // centroids missing: I_exact - sum(b t^3 / 12) per strip.
+  const double area = 2 * 8.0 * 1.0 + 0.5 * 10.0;
+  EXPECT_NEAR(wf.initialTangent()(0, 0), area, 1e-12 * area);
+  const double exact = 8.0 * (std::pow(12.0, 3) - std::pow(10.0, 3)) / 12.0 + 0.5 * std::pow(10.0, 3) / 12.0;
+  const double stripsOwn = 2 * 4 * 8.0 * std::pow(0.25, 3) / 12.0 + 5 * 0.5 * std::pow(2.0, 3) / 12.0;
+  EXPECT_NEAR(wf.initialTangent()(1, 1), exact - stripsOwn, 1e-12 * exact);
+  EXPECT_NEAR(wf.centroid(), 0.0, 1e-14);
+}
+
 TEST(SectionAggregator2d, AppendsMaterialsAfterTheSection) {
   Script s;
   model2d(s);
