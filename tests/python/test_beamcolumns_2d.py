@@ -283,6 +283,22 @@ def test_wide_flange_section_stiffness(ops):
     assert k[3] == pytest.approx(1000.0 * (2.0 * 8.0 + 2 * 6.0 * (3.5**2 + 4.5**2)), rel=1e-14)
 
 
+def test_rc_section_2d_areas_and_bar_layout(ops):
+    # d 20, b 12, cover 2; 3 bars of 3 on top, 3 of 2 at the bottom, 1 of 1 on each side.
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    for tag, e in ((1, 1.0), (2, 10.0), (3, 1000.0)):
+        ops.uniaxialMaterial("Elastic", tag, e)
+    ops.section("RCSection2d", 1, 1, 2, 3, 20.0, 12.0, 2.0, 3.0, 2.0, 1.0, 10, 2, 3)
+    zero_length_section(ops, 1)
+    k = ops.eleResponse(1, "section", "stiffness")
+    core, cover, bars = 16.0 * 8.0, 20.0 * 12.0 - 16.0 * 8.0, 3 * 3.0 + 3 * 2.0 + 2 * 1.0
+    assert k[0] == pytest.approx(1.0 * core + 10.0 * cover + 1000.0 * bars, rel=1e-14)
+    # About the area centroid yBar = (9 * 8 - 6 * 8) / (240 + 17): only the bars are unsymmetric.
+    y_bar = 24.0 / 257.0
+    first_moment = 1.0 * core * (0 - y_bar) + 10.0 * cover * (0 - y_bar) + 1000.0 * (24.0 - bars * y_bar)
+    assert k[1] == pytest.approx(-first_moment, rel=1e-12)
+
+
 # --- errors -------------------------------------------------------------------------
 
 def test_sections_of_the_other_space_are_refused(ops):

@@ -4,8 +4,8 @@ In the style of the OpenSees example MomentCurvature.py: a zeroLengthSection
 between two coincident nodes, an axial load held constant, then
 DisplacementControl on the rotation of node 2 (the curvature, the element
 having unit length). Sections: the example's RC column (Concrete01 core and
-cover, Steel01 bars, patch rect and layer straight), a steel WFSection2d
-(Steel02), a circular section (patch circ, layer circ) and a 3D fiber
+cover, Steel01 bars, patch rect and layer straight), a similar column as
+an RCSection2d (Steel02 bars), a steel WFSection2d (Steel02), a circular section (patch circ, layer circ) and a 3D fiber
 section bent about y and z. Curvature, moment, iteration counts, section
 and fiber responses at every step.
 """
@@ -97,6 +97,13 @@ def _wide_flange(ops):
     ops.section("WFSection2d", 1, 1, 20.99, 0.4, 8.24, 0.615, 10, 3)
 
 
+def _rc_section_2d(ops):
+    ops.uniaxialMaterial("Concrete01", 1, -6.0, -0.004, -5.0, -0.014)
+    ops.uniaxialMaterial("Concrete01", 2, -5.0, -0.002, 0.0, -0.006)
+    ops.uniaxialMaterial("Steel02", 3, 60.0, 29000.0, 0.01, 18.0, 0.925, 0.15)
+    ops.section("RCSection2d", 1, 1, 2, 3, 24.0, 15.0, 1.5, 0.79 * 3, 0.6 * 3, 0.44, 12, 2, 4)
+
+
 def _circular(ops):
     ops.uniaxialMaterial("Concrete01", 1, -5.0, -0.002, -4.0, -0.008)
     ops.uniaxialMaterial("Steel01", 2, 60.0, 29000.0, 0.005)
@@ -142,6 +149,7 @@ def run(ops):
     _moment_curvature_2d(ops, out, "tee.", _unsymmetric, 0.0, 0.0012, 15, fiber=(11.0, 0.0))
     _moment_curvature_2d(ops, out, "wf.", _wide_flange, -100.0, 0.0006, 30, fiber=(10.0, 0.0))
     _moment_curvature_2d(ops, out, "circ.", _circular, -300.0, 0.0008, 30)
+    _moment_curvature_2d(ops, out, "rcsection2d.", _rc_section_2d, -150.0, 0.001, 30)
     _section_3d(ops, out)
     ops.wipe()
     return out
