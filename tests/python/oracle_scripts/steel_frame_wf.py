@@ -6,6 +6,9 @@ beamIntegration; OpenSeesPy's dispBeamColumn takes only this form), PDelta
 columns, -mass (lumped) and -cMass.
 Eigenvalues of the frame, then gravity, loadConst, and a DisplacementControl
 pushover to yielding; displacements, iteration counts, element responses.
+First, three cantilevers of the column section: a forceBeamColumn with
+HingeRadau and HingeRadauTwo plastic hinges and a nonlinearBeamColumn in the older form with
+'-integration', with Element recorders.
 """
 
 
@@ -56,8 +59,58 @@ def _responses(ops, out, key):
     out[key + "disp"] = [ops.nodeDisp(n) for n in (3, 4, 5, 6)]
 
 
+def _hinge_columns(ops, out):
+    """Three cantilevers side by side: plastic hinges (HingeRadau and
+    HingeRadauTwo, elastic interior) and the older nonlinearBeamColumn form
+    with '-integration'."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    ops.uniaxialMaterial("Steel01", 1, 50.0, 29000.0, 0.02)
+    ops.section("WFSection2d", 1, 1, 13.7, 0.305, 8.0, 0.53, 12, 2)
+    ops.section("Elastic", 2, 29000.0, 8.85, 291.0)
+    ops.beamIntegration("HingeRadau", 1, 1, 12.0, 1, 12.0, 2)
+    ops.beamIntegration("HingeRadauTwo", 2, 1, 10.0, 1, 14.0, 2)
+    ops.geomTransf("Linear", 1)
+    for base, top, x in ((1, 2, 0.0), (3, 4, 100.0), (5, 6, 200.0)):
+        ops.node(base, x, 0.0)
+        ops.node(top, x, 120.0)
+        ops.fix(base, 1, 1, 1)
+    ops.element("forceBeamColumn", 1, 1, 2, 1, 1)
+    ops.element("nonlinearBeamColumn", 2, 3, 4, 4, 1, 1, "-integration", "Legendre", "-iter", 30, 1e-14)
+    ops.element("forceBeamColumn", 3, 5, 6, 1, 2)
+    ops.recorder("Element", "-file", "hinge_forces.out", "-time", "-ele", 1, 2, "basicForce")
+    ops.recorder("Element", "-file", "hinge_section.out", "-ele", 1, "section", 1, "deformation")
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 1.0, 0.0, 0.0)
+    ops.load(4, 1.0, 0.0, 0.0)
+    ops.load(6, 1.0, 0.0, 0.0)
+    ops.system("BandGeneral")
+    ops.constraints("Plain")
+    ops.numberer("RCM")
+    ops.test("NormDispIncr", 1.0e-10, 25)
+    ops.algorithm("Newton")
+    ops.integrator("DisplacementControl", 2, 1, 0.2)
+    ops.analysis("Static")
+    tips, iters = [], []
+    for _ in range(15):
+        ops.analyze(1)
+        iters.append(ops.testIter())
+        tips.append([ops.nodeDisp(2, 1), ops.nodeDisp(4, 1), ops.nodeDisp(6, 1), ops.getLoadFactor(1)])
+    out["hinge tips"] = tips
+    out["hinge iters"] = iters
+    for e in (1, 2, 3):
+        for what in ("basicForce", "plasticDeformation", "integrationPoints", "integrationWeights"):
+            out[f"hinge ele{e} {what}"] = ops.eleResponse(e, what)
+    ops.wipe()
+    for name in ("hinge_forces.out", "hinge_section.out"):
+        with open(name) as f:
+            out["file:" + name] = f.read()
+
+
 def run(ops):
     out = {}
+    _hinge_columns(ops, out)
     _model(ops)
     out["eigen"] = ops.eigen("-fullGenLapack", 3)
     _model(ops)
