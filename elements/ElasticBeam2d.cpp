@@ -180,8 +180,9 @@ std::unique_ptr<Element> ElasticBeam2d::build(CommandArgs& args, Domain& domain,
     const BeamSection& section = domain.sections.get(secTag, args.context());
     const auto* elastic = dynamic_cast<const ElasticSection2d*>(&section);
     if (!elastic)
-      args.fail("section " + std::to_string(secTag) + " is a " + section.className() +
-                " section; the 2D elasticBeamColumn takes an Elastic section (E, A, Iz)");
+      args.fail("section " + std::to_string(secTag) + " is a " + (section.ndm() == 2 ? "" : "3D ") +
+                section.className() + " section; the 2D elasticBeamColumn takes an Elastic section (E, A, Iz) "
+                "made in a 2D model");
     p.E = elastic->properties().E;
     p.A = elastic->properties().A;
     p.Iz = elastic->properties().Iz;

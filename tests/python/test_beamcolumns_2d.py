@@ -324,6 +324,10 @@ def test_sections_of_the_other_space_are_refused(ops):
     ops.beamIntegration("Legendre", 1, 2, 2)
     with pytest.raises(beamsolid.OpenSeesError, match=r"dispBeamColumn 1.*section Elastic 2 is a 3D section"):
         ops.element("dispBeamColumn", 1, 1, 2, 1, 1)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"elasticBeamColumn 2: section 2 is a 3D Elastic section"):
+        ops.element("elasticBeamColumn", 2, 1, 2, 2, 1)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"zeroLengthSection 3.*secTag.*2D model.*3D section"):
+        ops.element("zeroLengthSection", 3, 1, 2, 2)
 
 
 def test_2d_section_command_errors(ops):
