@@ -231,6 +231,43 @@ TEST(BeamColumns2d, TangentMatchesFiniteDifferencesInAPlasticState) {
     }
 }
 
+TEST(BeamColumns2d, ForceBasedSubstepsToTheSameStateAsSmallSteps) {
+  // One jump far into the plastic range with few element iterations (the
+  // element must substep) against the same monotonic path in 40 committed steps.
+  auto build = [](Script& s) -> beamsolid::ForceBeamColumn2d& {
+    model2d(s);
+    s("uniaxialMaterial", "ElasticPP", 1, 29000.0, 50.0 / 29000.0);
+    s("section", "Fiber", 1);
+    s("patch", "rect", 1, 20, 1, -5.0, -2.0, 5.0, 2.0);
+    s("node", 1, 0.0, 0.0);
+    s("node", 2, 0.0, 100.0);
+    s("geomTransf", "Linear", 1);
+    s("beamIntegration", "Lobatto", 1, 1, 5);
+    s("element", "forceBeamColumn", 1, 1, 2, 1, 1, "-iter", 4, 1e-20);
+    return dynamic_cast<beamsolid::ForceBeamColumn2d&>(s.interp.domain().element(1, "test"));
+  };
+  Vector u(3);
+  u << 2.0, -0.01, -0.03;
+  Script jump, steps;
+  auto& a = build(jump);
+  jump.interp.domain().node(2, "test").setTrialDisp(u);
+  a.update();
+  EXPECT_TRUE(a.converged());
+  EXPECT_GT(a.lastIterations(), 4) << "the jump should need substeps";
+  auto& b = build(steps);
+  Node& n = steps.interp.domain().node(2, "test");
+  for (int k = 1; k <= 40; ++k) {
+    n.setTrialDisp(u * (k / 40.0));
+    b.update();
+    ASSERT_TRUE(b.converged()) << k;
+    b.commitState();
+    n.commitState();
+  }
+  const auto qa = a.basicForce(), qb = b.basicForce();
+  EXPECT_LT((qa - qb).norm(), 1e-8 * qb.norm()) << qa.transpose() << " / " << qb.transpose();
+  EXPECT_GT(b.plasticDeformation().norm(), 1e-3);
+}
+
 TEST(BeamColumns2d, ElasticForceBasedMatchesTheClosedFormStiffness) {
   Script s;
   model2d(s);
