@@ -11,6 +11,8 @@ DispBeamColumn2d::DispBeamColumn2d(int tag, Definition&& definition)
 SectionBeamColumn2d::Interpolation DispBeamColumn2d::strainDisplacement(const std::vector<SectionCode>& codes,
                                                                        double xi, double L) {
   Interpolation B = Interpolation::Zero(static_cast<int>(codes.size()), 3);
+  // A shear component (Vy) gets no strain: Hermite bending is shear-rigid
+  // (OpenSees' 2D dispBeamColumn does the same).
   for (int r = 0; r < static_cast<int>(codes.size()); ++r) {
     if (codes[r] == SectionCode::P) B(r, 0) = 1.0 / L;
     if (codes[r] == SectionCode::Mz) {
@@ -94,11 +96,6 @@ void DispBeamColumn2d::addLoad(const ElementLoad& load, double factor) {
 
 std::unique_ptr<Element> DispBeamColumn2d::build(CommandArgs& args, Domain& domain) {
   auto d = SectionBeamColumn2d::parse(args, domain, "dispBeamColumn", BeamIntegration::Rule::Legendre, false);
-  for (const auto& s : d.sections)
-    for (SectionCode c : s->codes())
-      if (c == SectionCode::Vy)
-        args.fail(s->context() + " has a shear component (Vy), which the 2D dispBeamColumn does not take "
-                  "(use forceBeamColumn)");
   const int tag = d.tag;
   return std::make_unique<DispBeamColumn2d>(tag, std::move(d));
 }

@@ -8,8 +8,8 @@ namespace beamsolid {
 // a section deforms by eps = v0 / L and
 // kappa = ((6 xi - 4) theta_i + (6 xi - 2) theta_j) / L;
 // q = sum w L B^T s, kb = sum w L B^T ks B (default rule: Legendre).
-// Element loads enter as fixed-end forces of a prismatic member. Sections
-// with a shear component (Vy) are refused: Hermite bending has no shear strain.
+// Element loads enter as fixed-end forces of a prismatic member. A section's
+// shear component (Vy) stays unstrained: Hermite bending has no shear strain.
 class DispBeamColumn2d : public SectionBeamColumn2d {
  public:
   DispBeamColumn2d(int tag, Definition&& definition);

@@ -4,7 +4,8 @@ A 2D fiber section aggregated with an elastic-plastic shear spring (Vy) in a
 zeroLengthSection driven in shear and in bending; forceBeamColumn
 cantilevers whose sections are an Aggregator of a fiber section and a Vy
 material, an Aggregator of P and Mz materials alone, and an Elastic section
-with G and alphaY (Timoshenko), pushed at the tip; a consistent-mass
+with G and alphaY (Timoshenko; a dispBeamColumn leaves its Vy unstrained),
+pushed at the tip; a consistent-mass
 force-based cantilever's eigenvalues with -cMass (OpenSees keeps its mass lumped); and a 3D zeroLengthSection of
 an Aggregator of P, Mz, My and T materials.
 """
@@ -57,7 +58,7 @@ def _zero_length(ops, out):
 
 def _cantilever(ops, out, key, build_section, steps, dU, responses=("force", "localForce", "basicForce",
                                                                      "basicDeformation", "plasticDeformation",
-                                                                     "basicStiffness")):
+                                                                     "basicStiffness"), element="forceBeamColumn"):
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 3)
     build_section(ops)
@@ -67,7 +68,7 @@ def _cantilever(ops, out, key, build_section, steps, dU, responses=("force", "lo
     ops.fix(1, 1, 1, 1)
     ops.geomTransf("Linear", 1)
     ops.beamIntegration("Lobatto", 1, 3, 4)
-    ops.element("forceBeamColumn", 1, 1, 2, 1, 1)
+    ops.element(element, 1, 1, 2, 1, 1)
     ops.timeSeries("Linear", 1)
     ops.pattern("Plain", 1, 1)
     ops.load(2, 1.0, 0.0, 0.0)
@@ -159,6 +160,9 @@ def run(ops):
     # Elastic: no plastic deformation to compare (only round-off about zero).
     _cantilever(ops, out, "timoshenko.", _timoshenko, 2, 0.05,
                 responses=("force", "localForce", "basicForce", "basicDeformation", "basicStiffness"))
+    _cantilever(ops, out, "timoshenko disp.", _timoshenko, 2, 0.05,
+                responses=("force", "localForce", "basicForce", "basicDeformation", "basicStiffness"),
+                element="dispBeamColumn")
     _mass(ops, out)
     _aggregator_3d(ops, out)
     ops.wipe()
