@@ -9,6 +9,7 @@
 #include "core/Registry.h"
 #include "sections/BeamIntegration.h"
 #include "sections/FiberGeometry.h"
+#include "sections/FiberSection2d.h"
 #include "sections/FiberSection3d.h"
 
 namespace beamsolid {
@@ -17,15 +18,26 @@ using Result = Interpreter::Result;
 
 namespace {
 
-FiberSection3d& currentFiberSection(const Domain& domain, int tag, const CommandArgs& a) {
+// The section the patch, layer and fiber commands fill: a 3D fiber section,
+// or a 2D one that keeps only the fibers' y.
+struct FiberTarget {
+  FiberSection3d* section3d = nullptr;
+  FiberSection2d* section2d = nullptr;
+  void add(const UniaxialMaterial& material, double y, double z, double area) const {
+    if (section3d) section3d->addFiber(material, y, z, area);
+    else section2d->addFiber(material, y, area);
+  }
+};
+
+FiberTarget currentFiberSection(const Domain& domain, int tag, const CommandArgs& a) {
   if (tag < 0) a.fail("no section to add fibers to: call section('Fiber', secTag, '-GJ', GJ) first");
-  SectionForceDeformation* s = domain.sections.find(tag);
+  BeamSection* s = domain.sections.find(tag);
   if (!s) a.fail("the most recent section (" + std::to_string(tag) + ") no longer exists");
-  auto* fibers = dynamic_cast<FiberSection3d*>(s);
-  if (!fibers)
+  FiberTarget target{dynamic_cast<FiberSection3d*>(s), dynamic_cast<FiberSection2d*>(s)};
+  if (!target.section3d && !target.section2d)
     a.fail("the most recent section (" + s->className() + " " + std::to_string(tag) +
            ") is not a Fiber section; fibers need section('Fiber', ...)");
-  return *fibers;
+  return target;
 }
 
 // Fibers one patch, layer or section may hold. Real sections have hundreds;
@@ -56,14 +68,14 @@ double readPositive(CommandArgs& a, const char* what) {
   return v;
 }
 
-void addFibers(FiberSection3d& section, const UniaxialMaterial& material, const std::vector<FiberPoint>& points) {
-  for (const FiberPoint& p : points) section.addFiber(material, p.y, p.z, p.area);
+void addFibers(const FiberTarget& section, const UniaxialMaterial& material, const std::vector<FiberPoint>& points) {
+  for (const FiberPoint& p : points) section.add(material, p.y, p.z, p.area);
 }
 
 }  // namespace
 
 Result Interpreter::section(CommandArgs& a) {
-  std::shared_ptr<SectionForceDeformation> s = Registry::global().sections.build(a, *domain_);
+  std::shared_ptr<BeamSection> s = Registry::global().sections.build(a, *domain_);
   const int tag = s->tag();
   domain_->sections.add(tag, s, a.context());
   currentSectionTag_ = tag;
@@ -73,7 +85,7 @@ Result Interpreter::section(CommandArgs& a) {
 Result Interpreter::patch(CommandArgs& a) {
   const std::string type = a.nextString("type");
   a.setContext("patch " + type + (currentSectionTag_ >= 0 ? " (section " + std::to_string(currentSectionTag_) + ")" : ""));
-  FiberSection3d& section = currentFiberSection(*domain_, currentSectionTag_, a);
+  const FiberTarget section = currentFiberSection(*domain_, currentSectionTag_, a);
   const int matTag = a.nextInt("matTag");
   const UniaxialMaterial& material = domain_->uniaxialMaterials.get(matTag, a.context());
   if (type == "rect" || type == "rectangular") {
@@ -131,7 +143,7 @@ Result Interpreter::patch(CommandArgs& a) {
 Result Interpreter::layer(CommandArgs& a) {
   const std::string type = a.nextString("type");
   a.setContext("layer " + type + (currentSectionTag_ >= 0 ? " (section " + std::to_string(currentSectionTag_) + ")" : ""));
-  FiberSection3d& section = currentFiberSection(*domain_, currentSectionTag_, a);
+  const FiberTarget section = currentFiberSection(*domain_, currentSectionTag_, a);
   const int matTag = a.nextInt("matTag");
   const UniaxialMaterial& material = domain_->uniaxialMaterials.get(matTag, a.context());
   const int n = readCount(a, "numFiber");
@@ -160,13 +172,13 @@ Result Interpreter::layer(CommandArgs& a) {
 
 Result Interpreter::fiber(CommandArgs& a) {
   if (currentSectionTag_ >= 0) a.setContext("fiber (section " + std::to_string(currentSectionTag_) + ")");
-  FiberSection3d& section = currentFiberSection(*domain_, currentSectionTag_, a);
+  const FiberTarget section = currentFiberSection(*domain_, currentSectionTag_, a);
   const double y = a.nextDouble("yLoc");
   const double z = a.nextDouble("zLoc");
   const double area = readPositive(a, "A");
   const int matTag = a.nextInt("matTag");
   a.expectEnd();
-  section.addFiber(domain_->uniaxialMaterials.get(matTag, a.context()), y, z, area);
+  section.add(domain_->uniaxialMaterials.get(matTag, a.context()), y, z, area);
   return {};
 }
 

@@ -19,7 +19,7 @@
 
 namespace beamsolid {
 
-class SectionForceDeformation;
+class BeamSection;
 class BeamIntegration;
 
 // The model and nothing about solving it: nodes, elements, constraints,
@@ -114,7 +114,7 @@ class Domain {
   TaggedStore<CrdTransf> geomTransfs{"geomTransf"};
   TaggedStore<TimeSeries> timeSeries{"timeSeries"};
   // Prototypes that beam-column elements copy (sections) or read (rules).
-  TaggedStore<SectionForceDeformation> sections{"section"};
+  TaggedStore<BeamSection> sections{"section"};
   TaggedStore<BeamIntegration> beamIntegrations{"beamIntegration"};
 
   // --- recorders ---------------------------------------------------------------

@@ -16,7 +16,7 @@ class UniaxialMaterial;
 class NDMaterial;
 class CrdTransf;
 class TimeSeries;
-class SectionForceDeformation;
+class BeamSection;
 class BeamIntegration;
 class Recorder;
 class ConstraintHandler;
@@ -101,7 +101,7 @@ class Registry {
   FactoryTable<Element> elements{"element"};
   FactoryTable<UniaxialMaterial> uniaxialMaterials{"uniaxialMaterial"};
   FactoryTable<NDMaterial> ndMaterials{"nDMaterial"};
-  FactoryTable<SectionForceDeformation> sections{"section"};
+  FactoryTable<BeamSection> sections{"section"};
   FactoryTable<BeamIntegration> beamIntegrations{"beamIntegration"};
   FactoryTable<CrdTransf> geomTransfs{"geomTransf"};
   FactoryTable<TimeSeries> timeSeries{"timeSeries"};

@@ -3,6 +3,7 @@
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Registry.h"
+#include "elements/DispBeamColumn2d.h"
 
 namespace beamsolid {
 
@@ -97,6 +98,7 @@ void DispBeamColumn3d::addLoad(const ElementLoad& load, double factor) {
 namespace {
 
 std::unique_ptr<Element> buildDispBeamColumn3d(CommandArgs& args, Domain& domain) {
+  if (domain.spaceDim() == 2) return DispBeamColumn2d::build(args, domain);
   auto d = SectionBeamColumn3d::parse(args, domain, "dispBeamColumn", BeamIntegration::Rule::Legendre, false);
   const int tag = d.tag;
   return std::make_unique<DispBeamColumn3d>(tag, std::move(d));

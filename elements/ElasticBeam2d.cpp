@@ -5,7 +5,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "elements/BeamMass.h"
-#include "sections/ElasticSection3d.h"
+#include "sections/ElasticSection2d.h"
 
 namespace beamsolid {
 
@@ -177,11 +177,12 @@ std::unique_ptr<Element> ElasticBeam2d::build(CommandArgs& args, Domain& domain,
   if (numbers == 2) {
     // The section form: E, A, Iz of an Elastic section.
     const int secTag = args.nextInt("secTag");
-    const SectionForceDeformation& section = domain.sections.get(secTag, args.context());
-    const auto* elastic = dynamic_cast<const ElasticSection3d*>(&section);
+    const BeamSection& section = domain.sections.get(secTag, args.context());
+    const auto* elastic = dynamic_cast<const ElasticSection2d*>(&section);
     if (!elastic)
-      args.fail("section " + std::to_string(secTag) + " is a " + section.className() +
-                " section; the 2D elasticBeamColumn takes an Elastic section (E, A, Iz)");
+      args.fail("section " + std::to_string(secTag) + " is a " + (section.ndm() == 2 ? "" : "3D ") +
+                section.className() + " section; the 2D elasticBeamColumn takes an Elastic section (E, A, Iz) "
+                "made in a 2D model");
     p.E = elastic->properties().E;
     p.A = elastic->properties().A;
     p.Iz = elastic->properties().Iz;

@@ -8,6 +8,7 @@
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Registry.h"
+#include "elements/ForceBeamColumn2d.h"
 
 namespace beamsolid {
 
@@ -219,6 +220,7 @@ void ForceBeamColumn3d::addLoad(const ElementLoad& load, double factor) {
 namespace {
 
 std::unique_ptr<Element> buildForceBeamColumn3d(CommandArgs& args, Domain& domain, const std::string& type) {
+  if (domain.spaceDim() == 2) return ForceBeamColumn2d::build(args, domain, type);
   auto d = SectionBeamColumn3d::parse(args, domain, type, BeamIntegration::Rule::Lobatto, true);
   const int tag = d.tag;
   return std::make_unique<ForceBeamColumn3d>(tag, std::move(d));

@@ -1,6 +1,7 @@
 #include "elements/SectionBeamColumn3d.h"
 
 #include "elements/BeamMass.h"
+#include "elements/BeamColumnCommand.h"
 
 #include <variant>
 
@@ -216,86 +217,16 @@ void SectionBeamColumn3d::printJSON(std::ostream& os) const {
 
 SectionBeamColumn3d::Definition SectionBeamColumn3d::parse(CommandArgs& args, Domain& domain, const std::string& type,
                                                            BeamIntegration::Rule defaultRule, bool forceBased) {
+  BeamColumnCommand c = BeamColumnCommand::parse(args, domain, type, defaultRule, forceBased, false);
   Definition d;
-  d.tag = args.nextInt("eleTag");
-  args.setContext("element " + type + " " + std::to_string(d.tag));
-  d.nodeI = args.nextInt("iNode");
-  d.nodeJ = args.nextInt("jNode");
-
-  // The number of numbers up to the first option tells the forms apart.
-  std::size_t numbers = 0;
-  while (args.position() + numbers < args.size() &&
-         !std::holds_alternative<std::string>(args.at(args.position() + numbers)))
-    ++numbers;
-  int transfTag = 0;
-  int integrationTag = 0;
-  int numPoints = 0, sectionTag = 0;
-  std::size_t numPointsAt = 0;
-  const bool olderForm = numbers == 3;
-  if (numbers == 2) {
-    transfTag = args.nextInt("transfTag");
-    integrationTag = args.nextInt("integrationTag");
-  } else if (olderForm) {
-    numPointsAt = args.position();
-    numPoints = args.nextInt("numIntgrPts");
-    sectionTag = args.nextInt("secTag");
-    transfTag = args.nextInt("transfTag");
-  } else {
-    args.fail("expected transfTag, integrationTag (or numIntgrPts, secTag, transfTag) after the nodes, got " +
-              std::to_string(numbers) + " number(s)");
-  }
-
-  BeamIntegration::Rule rule = defaultRule;
-  while (!args.done()) {
-    if (args.nextFlag("-mass")) {
-      const std::size_t at = args.position();
-      d.options.massPerLength = args.nextDouble("massPerLength");
-      if (!(d.options.massPerLength >= 0.0)) args.failAt(at, "massPerLength", "a number >= 0");
-    } else if (args.nextFlag("-cMass")) {
-      if (forceBased) args.fail("'-cMass' is not available: " + type + " has a lumped mass only");
-      d.options.consistentMass = true;
-    } else if (args.nextFlag("-iter")) {
-      if (!forceBased) args.fail("'-iter' is only for force-based elements (forceBeamColumn)");
-      std::size_t at = args.position();
-      d.options.maxIterations = args.nextInt("maxIter");
-      if (d.options.maxIterations < 1) args.failAt(at, "maxIter", "an integer >= 1");
-      at = args.position();
-      d.options.tolerance = args.nextDouble("tol");
-      if (!(d.options.tolerance > 0.0)) args.failAt(at, "tol", "a positive number");
-    } else if (args.nextFlag("-integration")) {
-      if (!olderForm)
-        args.fail("'-integration' belongs to the older form (numIntgrPts, secTag, transfTag); with an "
-                  "integrationTag the rule comes from beamIntegration");
-      const std::string name = args.nextString("integration rule");
-      using Rule = BeamIntegration::Rule;
-      bool known = false;
-      for (Rule r : {Rule::Lobatto, Rule::Legendre, Rule::Radau, Rule::NewtonCotes})
-        if (name == BeamIntegration::ruleName(r)) {
-          rule = r;
-          known = true;
-        }
-      if (!known) args.fail("unknown integration rule '" + name + "' (expected Lobatto, Legendre, Radau or NewtonCotes)");
-    } else if (args.nextIsString()) {
-      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass'" +
-                (forceBased ? std::string(", '-iter'") : std::string(", '-cMass'")) +
-                (olderForm ? ", '-integration'" : "") + ")");
-    } else {
-      args.expectEnd();
-    }
-  }
-
-  if (olderForm) {
-    if (numPoints < BeamIntegration::minPoints(rule) || numPoints > BeamIntegration::maxPoints(rule))
-      args.failAt(numPointsAt, "numIntgrPts",
-                  "a number of points in " + std::to_string(BeamIntegration::minPoints(rule)) + ".." +
-                      std::to_string(BeamIntegration::maxPoints(rule)) + " for " + BeamIntegration::ruleName(rule));
-    domain.sections.get(sectionTag, args.context());
-    d.integration = std::make_shared<BeamIntegration>(0, rule, std::vector<int>(numPoints, sectionTag));
-  } else {
-    d.integration = domain.beamIntegrations.shared(integrationTag, args.context());
-  }
-  for (int s : d.integration->sectionTags()) d.sections.push_back(domain.sections.get(s, args.context()).clone());
-  d.transf = domain.geomTransfs.get(transfTag, args.context()).clone();
+  d.tag = c.tag;
+  d.nodeI = c.nodeI;
+  d.nodeJ = c.nodeJ;
+  d.options = c.options;
+  d.integration = std::move(c.integration);
+  for (int s : d.integration->sectionTags())
+    d.sections.push_back(SectionForceDeformation::of(domain.sections.get(s, args.context()), args.context()).clone());
+  d.transf = domain.geomTransfs.get(c.transfTag, args.context()).clone();
   return d;
 }
 

@@ -2,6 +2,7 @@
 #include <memory>
 #include <vector>
 
+#include "elements/BeamColumnCommand.h"
 #include "elements/Element.h"
 #include "elements/transforms/CrdTransf.h"
 #include "sections/BeamIntegration.h"
@@ -26,13 +27,7 @@ class SectionBeamColumn3d : public Element {
   using Matrix12 = CrdTransf::Matrix12;
   using Sections = std::vector<std::unique_ptr<SectionForceDeformation>>;
 
-  struct Options {
-    double massPerLength = 0.0;
-    bool consistentMass = false;
-    // Element compatibility iterations (force-based only).
-    int maxIterations = 10;
-    double tolerance = 1e-12;
-  };
+  using Options = BeamColumnOptions;
 
   // Everything an element command defines, parsed by parse().
   struct Definition {

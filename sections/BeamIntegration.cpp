@@ -163,8 +163,16 @@ BeamIntegration::BeamIntegration(int tag, Rule rule, const Hinges& hinges) : tag
   if (rule != Rule::HingeRadau && rule != Rule::HingeRadauTwo)
     throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
                         ": not a hinge rule");
-  sectionTags_ = {hinges.sectionI, hinges.sectionI, hinges.sectionInterior,
-                  hinges.sectionInterior, hinges.sectionJ, hinges.sectionJ};
+  // HingeRadau (Scott and Fenves 2006, modified Radau over 4 lp): only the
+  // end points carry the hinge sections; the points at 8/3 lp belong to the
+  // interior, so the hinge is lp long (checked against OpenSeesPy).
+  // HingeRadauTwo: both points of each hinge region are hinge sections.
+  if (rule == Rule::HingeRadau)
+    sectionTags_ = {hinges.sectionI, hinges.sectionInterior, hinges.sectionInterior,
+                    hinges.sectionInterior, hinges.sectionInterior, hinges.sectionJ};
+  else
+    sectionTags_ = {hinges.sectionI, hinges.sectionI, hinges.sectionInterior,
+                    hinges.sectionInterior, hinges.sectionJ, hinges.sectionJ};
 }
 
 void BeamIntegration::pointsAndWeights(double length, std::vector<double>& xi, std::vector<double>& weights) const {

@@ -15,8 +15,10 @@ namespace beamsolid {
 // plastic hinge rules of Scott and Fenves (2006) (rule, tag, secI, lpI,
 // secJ, lpJ, secE):
 //   'HingeRadau'     modified two-point Radau over 4*lp at each end: points at
-//                    the end (weight lp) and 8/3 lp inside (weight 3 lp)
-//   'HingeRadauTwo'  two-point Radau over lp: the end (lp/4) and 2/3 lp (3lp/4)
+//                    the end (weight lp, the hinge section) and 8/3 lp inside
+//                    (weight 3 lp, section secE): the hinge is lp long
+//   'HingeRadauTwo'  two-point Radau over lp: the end (lp/4) and 2/3 lp (3lp/4),
+//                    both the hinge section
 // with two Gauss points of section secE on the interior.
 class BeamIntegration {
  public:

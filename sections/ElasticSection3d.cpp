@@ -3,6 +3,7 @@
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Registry.h"
+#include "sections/ElasticSection2d.h"
 
 namespace beamsolid {
 
@@ -32,25 +33,11 @@ void ElasticSection3d::print(std::ostream& os) const {
 
 namespace {
 
-std::unique_ptr<SectionForceDeformation> buildElasticSection3d(CommandArgs& args, Domain& domain) {
+std::unique_ptr<BeamSection> buildElasticSection3d(CommandArgs& args, Domain& domain) {
   const int tag = args.nextInt("secTag");
   args.setContext("section Elastic " + std::to_string(tag));
   const std::size_t numbers = args.remaining();
-  if (domain.spaceDim() == 2) {
-    // The 2D section (E, A, Iz) is kept as the 3D one without the out-of-
-    // plane terms; only the 2D elasticBeamColumn reads it.
-    if (numbers == 5) args.fail("shear-deformable sections (G, alphaY) are not supported; give E, A, Iz");
-    if (numbers != 3)
-      args.fail("expected E, A, Iz (3 numbers) after the tag in a 2D model, got " + std::to_string(numbers));
-    ElasticSection3d::Properties p;
-    for (double* value : {&p.E, &p.A, &p.Iz}) {
-      const std::size_t at = args.position();
-      const char* name = value == &p.E ? "E" : value == &p.A ? "A" : "Iz";
-      *value = args.nextDouble(name);
-      if (!(*value > 0.0)) args.failAt(at, name, "a positive number");
-    }
-    return std::make_unique<ElasticSection3d>(tag, p);
-  }
+  if (domain.spaceDim() == 2) return ElasticSection2d::build(args, tag);
   if (numbers == 3)
     args.fail("the 2D form (E, A, Iz) needs a 2D model (-ndm 2); in 3D give E, A, Iz, Iy, G, J");
   if (numbers == 8)

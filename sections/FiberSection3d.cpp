@@ -9,6 +9,7 @@
 #include "core/Domain.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "sections/FiberSection2d.h"
 
 namespace beamsolid {
 
@@ -197,9 +198,10 @@ void FiberSection3d::print(std::ostream& os) const {
 
 namespace {
 
-std::unique_ptr<SectionForceDeformation> buildFiberSection3d(CommandArgs& args, Domain& domain) {
+std::unique_ptr<BeamSection> buildFiberSection3d(CommandArgs& args, Domain& domain) {
   const int tag = args.nextInt("secTag");
   args.setContext("section Fiber " + std::to_string(tag));
+  if (domain.spaceDim() == 2) return FiberSection2d::build(args, domain, tag);
   std::unique_ptr<FiberSection3d> section;
   while (!args.done()) {
     if (args.nextFlag("-GJ")) {

@@ -1,8 +1,16 @@
 #include "sections/SectionForceDeformation.h"
 
+#include "core/OpenSeesError.h"
+
 namespace beamsolid {
 
-std::string SectionForceDeformation::context() const { return "section " + className() + " " + std::to_string(tag_); }
+const SectionForceDeformation& SectionForceDeformation::of(const BeamSection& section, const std::string& context) {
+  const auto* s = dynamic_cast<const SectionForceDeformation*>(&section);
+  if (!s)
+    throw OpenSeesError(context + ": " + section.context() + " is a " + std::to_string(section.ndm()) +
+                        "D section; a 3D element needs a section made in a 3D model (-ndm 3)");
+  return *s;
+}
 
 Response SectionForceDeformation::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
@@ -34,8 +42,5 @@ Response SectionForceDeformation::setResponse(const std::vector<std::string>& ar
   return {};
 }
 
-void SectionForceDeformation::print(std::ostream& os) const {
-  os << "Section " << tag_ << " type " << className() << '\n';
-}
 
 }  // namespace beamsolid

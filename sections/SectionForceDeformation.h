@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/Response.h"
+#include "sections/BeamSection.h"
 
 namespace beamsolid {
 
@@ -20,18 +20,19 @@ namespace beamsolid {
 // A fiber at (y, z) strains by eps - y*kappaZ + z*kappaY, and
 // Mz = -integral(sigma*y dA), My = integral(sigma*z dA), so a linear section
 // has ks = diag(EA, EIz, EIy, GJ) when y = z = 0 is the centroid.
-class SectionForceDeformation {
+class SectionForceDeformation : public BeamSection {
  public:
   static constexpr int kOrder = 4;
   using Vector4 = Eigen::Matrix<double, 4, 1>;
   using Matrix4 = Eigen::Matrix<double, 4, 4>;
 
-  explicit SectionForceDeformation(int tag) : tag_(tag) {}
-  virtual ~SectionForceDeformation() = default;
+  explicit SectionForceDeformation(int tag) : BeamSection(tag) {}
 
-  int tag() const { return tag_; }
-  virtual std::string className() const = 0;
+  int ndm() const final { return 3; }
   virtual std::unique_ptr<SectionForceDeformation> clone() const = 0;
+  std::unique_ptr<BeamSection> cloneSection() const final { return clone(); }
+  // `section` as a 3D section; an OpenSeesError naming `context` for a 2D one.
+  static const SectionForceDeformation& of(const BeamSection& section, const std::string& context);
 
   virtual void setTrialDeformation(const Vector4& e) = 0;
   virtual const Vector4& deformation() const = 0;
@@ -39,21 +40,10 @@ class SectionForceDeformation {
   virtual const Matrix4& tangent() const = 0;
   virtual const Matrix4& initialTangent() const = 0;
 
-  virtual void commitState() = 0;
-  virtual void revertToLastCommit() = 0;
-  virtual void revertToStart() = 0;
-
   // 'force'/'forces' (P, Mz, My, T), 'deformation'/'deformations',
   // 'forceAndDeformation', 'stiffness' (16, row by row); an empty Response
   // when the arguments name nothing this section has.
-  virtual Response setResponse(const std::vector<std::string>& args);
-  virtual void print(std::ostream& os) const;
-
-  // "section <className> <tag>", the prefix of this section's messages.
-  std::string context() const;
-
- private:
-  int tag_;
+  Response setResponse(const std::vector<std::string>& args) override;
 };
 
 }  // namespace beamsolid

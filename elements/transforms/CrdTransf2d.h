@@ -32,6 +32,9 @@ class CrdTransf2d {
   // Binds to the element's end nodes (ndm 2, ndf 3); throws on zero length.
   virtual void initialize(const Node& nodeI, const Node& nodeJ) = 0;
   virtual void update() = 0;
+  // Path-dependent transformations (Corotational) keep committed state.
+  virtual void commitState() {}
+  virtual void revertToLastCommit() {}
   virtual void revertToStart() = 0;
 
   virtual double initialLength() const = 0;

@@ -25,7 +25,9 @@ using Vector4 = SectionForceDeformation::Vector4;
 using Matrix4 = SectionForceDeformation::Matrix4;
 constexpr double kPi = std::numbers::pi;
 
-SectionForceDeformation& sectionOf(Script& s, int tag) { return s.interp.domain().sections.get(tag, "test"); }
+SectionForceDeformation& sectionOf(Script& s, int tag) {
+  return dynamic_cast<SectionForceDeformation&>(s.interp.domain().sections.get(tag, "test"));
+}
 FiberSection3d& fiberSectionOf(Script& s, int tag) { return dynamic_cast<FiberSection3d&>(sectionOf(s, tag)); }
 
 void model3d(Script& s) { s("model", "basic", "-ndm", 3, "-ndf", 6); }
@@ -451,7 +453,10 @@ TEST(BeamIntegration, HingeRulesFromCommands) {
   EXPECT_NEAR(w[5] * L, 0.2, 1e-15);
   EXPECT_NEAR(xi[1] * L, 8.0 / 3.0 * 0.1, 1e-15);
   EXPECT_NEAR((1.0 - xi[4]) * L, 8.0 / 3.0 * 0.2, 1e-15);
-  EXPECT_EQ(radau.sectionTags(), (std::vector<int>{1, 1, 2, 2, 1, 1}));
+  // Only the end points are hinge sections (Scott and Fenves' modified Radau:
+  // the hinge is lp long); HingeRadauTwo puts both points of a region in the hinge.
+  EXPECT_EQ(radau.sectionTags(), (std::vector<int>{1, 2, 2, 2, 2, 1}));
+  EXPECT_EQ(s.interp.domain().beamIntegrations.get(8, "test").sectionTags(), (std::vector<int>{1, 1, 2, 2, 1, 1}));
   // Each region integrates quadratics exactly, so the whole rule does.
   for (int degree = 0; degree <= 2; ++degree)
     EXPECT_NEAR(integrate(xi, w, degree), 1.0 / (degree + 1), 1e-15) << degree;

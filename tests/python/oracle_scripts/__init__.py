@@ -27,4 +27,8 @@ SCRIPTS = (
     "constraints_and_queries",
     "spring_chain_1d",
     "nonlinear_truss_2d",
+    "moment_curvature",
+    "rc_frame_2d",
+    "steel_frame_wf",
+    "aggregator_2d",
 )

@@ -1,0 +1,83 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "materials/uniaxial/UniaxialMaterial.h"
+#include "sections/SectionForceDeformation2d.h"
+
+namespace beamsolid {
+
+class CommandArgs;
+class Domain;
+
+// section('Fiber', tag, <'-GJ', GJ>) in a 2D model: the fibers of the patch,
+// layer and fiber commands with their z dropped (a 2D section bends about z
+// only; '-GJ' is accepted and has nothing to act on). As OpenSees, the
+// reference axis is the area centroid yBar of the fibers, so a fiber strains
+// by eps - (y - yBar) kappa and a symmetric or unsymmetric section alike has
+// no axial-flexural coupling while elastic and homogeneous. Order [P, Mz].
+class FiberSection2d : public SectionForceDeformation2d {
+ public:
+  struct Fiber {
+    std::unique_ptr<UniaxialMaterial> material;
+    double y = 0.0, area = 0.0;
+  };
+
+  explicit FiberSection2d(int tag);
+  FiberSection2d(const FiberSection2d& other);
+  FiberSection2d& operator=(const FiberSection2d&) = delete;
+
+  // Reads the options after the tag (2D model).
+  static std::unique_ptr<FiberSection2d> build(CommandArgs& args, Domain& domain, int tag);
+
+  std::string className() const override { return "Fiber"; }
+  std::unique_ptr<SectionForceDeformation2d> clone() const override;
+  const std::vector<SectionCode>& codes() const override;
+
+  // A fiber with its own copy of `material`; throws for area <= 0.
+  void addFiber(const UniaxialMaterial& material, double y, double area);
+  std::size_t numFibers() const { return fibers_.size(); }
+  const Fiber& fiber(std::size_t i) const { return fibers_.at(i); }
+  double centroid() const { return yBar_; }
+  // The fiber nearest to y, optionally of one material; -1 if none.
+  int nearestFiber(double y, int materialTag = -1) const;
+
+  void setTrialDeformation(const Vector& e) override;
+  const Vector& deformation() const override { return deformation_; }
+  const Vector& force() const override { return force_; }
+  const Matrix& tangent() const override { return tangent_; }
+  const Matrix& initialTangent() const override { return initialTangent_; }
+
+  void commitState() override;
+  void revertToLastCommit() override;
+  void revertToStart() override;
+
+  // Besides the base responses: 'fiber', y, z, <matTag>, *materialArgs (the
+  // fiber nearest in y), 'fiber', index, *materialArgs (0-based), 'fiberData'
+  // (y, 0, area, stress, strain of every fiber), 'numFibers'.
+  Response setResponse(const std::vector<std::string>& args) override;
+  void print(std::ostream& os) const override;
+
+ protected:
+  // Sums over the fibers about y = 0, shifted to the centroid when read.
+  struct Sums {
+    double force = 0.0, firstMoment = 0.0;                 // sum sigma A, sum sigma A y
+    double stiffness = 0.0, stiffY = 0.0, stiffYY = 0.0;   // sum E A, sum E A y, sum E A y^2
+  };
+  void fromSums(const Sums& current, const Sums& initial);
+
+ private:
+  void sumFibers();
+
+  std::vector<Fiber> fibers_;
+  double area_ = 0.0, areaY_ = 0.0, yBar_ = 0.0;
+  Sums initialSums_;
+
+  Vector deformation_ = Vector::Zero(2);
+  Vector committedDeformation_ = Vector::Zero(2);
+  Vector force_ = Vector::Zero(2);
+  Matrix tangent_ = Matrix::Zero(2, 2);
+  Matrix initialTangent_ = Matrix::Zero(2, 2);
+};
+
+}  // namespace beamsolid

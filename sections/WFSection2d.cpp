@@ -1,0 +1,60 @@
+#include "sections/WFSection2d.h"
+
+#include "core/CommandArgs.h"
+#include "core/Domain.h"
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+WFSection2d::WFSection2d(int tag, const UniaxialMaterial& material, const Dimensions& w)
+    : FiberSection2d(tag), dimensions_(w) {
+  const double webHeight = w.d - 2.0 * w.tf;
+  const double webStrip = webHeight / w.webFibers;
+  const double flangeStrip = w.tf / w.flangeFibers;
+  // Bottom flange, web, top flange, each from the bottom up.
+  for (int k = 0; k < w.flangeFibers; ++k)
+    addFiber(material, -0.5 * w.d + (k + 0.5) * flangeStrip, w.bf * flangeStrip);
+  for (int k = 0; k < w.webFibers; ++k) addFiber(material, -0.5 * webHeight + (k + 0.5) * webStrip, w.tw * webStrip);
+  for (int k = 0; k < w.flangeFibers; ++k)
+    addFiber(material, 0.5 * webHeight + (k + 0.5) * flangeStrip, w.bf * flangeStrip);
+}
+
+std::unique_ptr<SectionForceDeformation2d> WFSection2d::clone() const { return std::make_unique<WFSection2d>(*this); }
+
+namespace {
+
+std::unique_ptr<BeamSection> buildWFSection2d(CommandArgs& args, Domain& domain) {
+  const int tag = args.nextInt("secTag");
+  args.setContext("section WFSection2d " + std::to_string(tag));
+  if (domain.spaceDim() != 2) args.fail("WFSection2d is a 2D section: it needs a 2D model (-ndm 2)");
+  const int matTag = args.nextInt("matTag");
+  const UniaxialMaterial& material = domain.uniaxialMaterials.get(matTag, args.context());
+  WFSection2d::Dimensions w;
+  struct Positive {
+    double* value;
+    const char* name;
+  };
+  for (const Positive& item : {Positive{&w.d, "d"}, Positive{&w.tw, "tw"}, Positive{&w.bf, "bf"}, Positive{&w.tf, "tf"}}) {
+    const std::size_t at = args.position();
+    *item.value = args.nextDouble(item.name);
+    if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+  }
+  std::size_t at = args.position();
+  w.webFibers = args.nextInt("Nfw");
+  if (w.webFibers < 1 || w.webFibers > 100000) args.failAt(at, "Nfw", "an integer in 1..100000");
+  at = args.position();
+  w.flangeFibers = args.nextInt("Nff");
+  if (w.flangeFibers < 1 || w.flangeFibers > 100000) args.failAt(at, "Nff", "an integer in 1..100000");
+  args.expectEnd();
+  if (!(2.0 * w.tf < w.d)) args.fail("the flanges (2 tf = " + std::to_string(2.0 * w.tf) + ") leave no web in d = " +
+                                     std::to_string(w.d));
+  return std::make_unique<WFSection2d>(tag, material, w);
+}
+
+void registerWFSection2d(Registry& r) { r.sections.add("WFSection2d", &buildWFSection2d); }
+
+}  // namespace
+
+BEAMSOLID_REGISTER(registerWFSection2d);
+
+}  // namespace beamsolid
