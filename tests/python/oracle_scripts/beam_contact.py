@@ -3,7 +3,8 @@ up (DisplacementControl) so that the node sticks and then slides: every response
 for the element (force, frictionforce, forcescalar, masterforce, mastermoment, masterreaction, slip,
 gap, status) after each step, the soil node's displacement and the pull's load factor.
 
-frictionforce is the friction acting on the pile: a pile pulled up reads a negative z.
+frictionforce is the friction acting on the pile: a pile pulled up reads a negative z. The same
+pull-out runs again with BeamContact3Dp (penalty 1e6 instead of the multiplier).
 
 Nodes: beam 1 (0, 0, 0) and 2 (0, 0, 2), ndf 6, free only along z (a 1 kN/m spring under 1); soil node 3 at (R, 0, 1) on a
 zeroLength spring (k = 1000 in x, y, z) to fixed node 8, pushed onto the pile by N = 10 kN;
@@ -17,6 +18,14 @@ RESPONSES = ("force", "frictionforce", "forcescalar", "masterforce", "mastermome
 
 def run(ops):
     out = {}
+    _pull(ops, out, "")
+    _pull(ops, out, "penalty.")
+    ops.wipe()
+    return out
+
+
+def _pull(ops, out, prefix):
+    """The pull-out; prefix 'penalty.' runs it with BeamContact3Dp (penalty 1e6, no multiplier)."""
     ops.wipe()
     ops.model("basic", "-ndm", 3, "-ndf", 6)
     ops.node(1, 0.0, 0.0, 0.0)
@@ -34,13 +43,17 @@ def run(ops):
     ops.element("elasticBeamColumn", 10, 1, 2, 0.28, 3e7, 1.2e7, 0.0127, 0.0064, 0.0064, 1)
     ops.model("basic", "-ndm", 3, "-ndf", 3)
     ops.node(3, R, 0.0, 1.0)
-    ops.node(4, R, 0.0, 1.0)
+    if not prefix:
+        ops.node(4, R, 0.0, 1.0)  # the multiplier node (none with the penalty)
     ops.node(8, R, 0.0, 1.0)
     ops.fix(8, 1, 1, 1)
     ops.uniaxialMaterial("Elastic", 3, 1000.0)
     ops.element("zeroLength", 30, 8, 3, "-mat", 3, 3, 3, "-dir", 1, 2, 3)
     ops.nDMaterial("ContactMaterial3D", 1, 0.3, 1000.0, 0.0, 0.0)
-    ops.element("BeamContact3D", 20, 1, 2, 3, 4, R, 1, 1, 1e-10, 1e-10)
+    if prefix:
+        ops.element("BeamContact3Dp", 20, 1, 2, 3, R, 1, 1, 1.0e6, 0)
+    else:
+        ops.element("BeamContact3D", 20, 1, 2, 3, 4, R, 1, 1, 1e-10, 1e-10)
 
     ops.updateMaterialStage("-material", 1, "-stage", 1)
     ops.timeSeries("Linear", 1)
@@ -53,8 +66,8 @@ def run(ops):
     ops.algorithm("Newton")
     ops.integrator("LoadControl", 1.0)
     ops.analysis("Static")
-    out["press.code"] = ops.analyze(1)
-    _read(ops, out, "press")
+    out[prefix + "press.code"] = ops.analyze(1)
+    _read(ops, out, prefix + "press")
 
     ops.loadConst("-time", 0.0)
     ops.timeSeries("Linear", 2)
@@ -62,11 +75,10 @@ def run(ops):
     ops.load(2, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
     ops.integrator("DisplacementControl", 2, 3, 0.001)
     for step in range(10):
-        out[f"pull{step}.code"] = ops.analyze(1)
-        out[f"pull{step}.iter"] = ops.testIter()
-        out[f"pull{step}.lambda"] = ops.getLoadFactor(2)
-        _read(ops, out, f"pull{step}")
-    return out
+        out[f"{prefix}pull{step}.code"] = ops.analyze(1)
+        out[f"{prefix}pull{step}.iter"] = ops.testIter()
+        out[f"{prefix}pull{step}.lambda"] = ops.getLoadFactor(2)
+        _read(ops, out, f"{prefix}pull{step}")
 
 
 def _read(ops, out, key):
