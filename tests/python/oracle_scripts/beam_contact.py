@@ -4,7 +4,8 @@ for the element (force, frictionforce, forcescalar, masterforce, mastermoment, m
 gap, status) after each step, the soil node's displacement and the pull's load factor.
 
 frictionforce is the friction acting on the pile: a pile pulled up reads a negative z. The same
-pull-out runs again with BeamContact3Dp (penalty 1e6 instead of the multiplier).
+pull-out runs again with BeamContact3Dp (penalty 1e6 instead of the multiplier). Then a soil node
+under the pile tip against BeamEndContact3D and BeamEndContact3Dp, pressed and released.
 
 Nodes: beam 1 (0, 0, 0) and 2 (0, 0, 2), ndf 6, free only along z (a 1 kN/m spring under 1); soil node 3 at (R, 0, 1) on a
 zeroLength spring (k = 1000 in x, y, z) to fixed node 8, pushed onto the pile by N = 10 kN;
@@ -20,6 +21,8 @@ def run(ops):
     out = {}
     _pull(ops, out, "")
     _pull(ops, out, "penalty.")
+    _end(ops, out, "")
+    _end(ops, out, "penalty.")
     ops.wipe()
     return out
 
@@ -79,6 +82,51 @@ def _pull(ops, out, prefix):
         out[f"{prefix}pull{step}.iter"] = ops.testIter()
         out[f"{prefix}pull{step}.lambda"] = ops.getLoadFactor(2)
         _read(ops, out, f"{prefix}pull{step}")
+
+
+def _end(ops, out, prefix):
+    """BeamEndContact3D (BeamEndContact3Dp with prefix 'penalty.'): the pile's tip is node 2 at
+    z = 0 (iNode; jNode 1 above it), a soil node 3 under the tip on springs is pushed up against
+    the face and then pulled away (the Path factor turns negative), so the contact closes and
+    opens."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 2.0)
+    ops.node(2, 0.0, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.fix(2, 1, 1, 0, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 1.0, 0.0, 0.0)
+    ops.element("elasticBeamColumn", 10, 1, 2, 0.28, 3e7, 1.2e7, 0.0127, 0.0064, 0.0064, 1)
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.node(3, 0.1, 0.05, -0.001)
+    if not prefix:
+        ops.node(4, 0.1, 0.05, -0.001)
+    ops.node(8, 0.1, 0.05, -0.001)
+    ops.fix(8, 1, 1, 1)
+    ops.uniaxialMaterial("Elastic", 3, 1000.0)
+    ops.element("zeroLength", 30, 8, 3, "-mat", 3, 3, 3, "-dir", 1, 2, 3)
+    if prefix:
+        ops.element("BeamEndContact3Dp", 20, 2, 1, 3, R, 1.0e6)
+    else:
+        ops.element("BeamEndContact3D", 20, 2, 1, 3, 4, R, 1e-10, 1e-10)
+    ops.timeSeries("Path", 1, "-time", 0.0, 1.0, 2.0, 3.0, "-values", 0.0, 1.0, 0.4, -0.5)
+    ops.pattern("Plain", 1, 1)
+    ops.load(3, 0.0, 0.0, 20.0)
+    ops.constraints("Transformation")
+    ops.numberer("Plain")
+    ops.system("UmfPack")
+    ops.test("NormDispIncr", 1e-12, 30)
+    ops.algorithm("Newton")
+    ops.integrator("LoadControl", 0.5)
+    ops.analysis("Static")
+    for step in range(6):
+        key = f"{prefix}end{step}"
+        out[key + ".code"] = ops.analyze(1)
+        out[key + ".iter"] = ops.testIter()
+        for r in ("force", "masterforce"):
+            out[f"{key}.{r}"] = ops.eleResponse(20, r)
+        out[key + ".soil"] = ops.nodeDisp(3)
+        out[key + ".tip"] = ops.nodeDisp(2, 3)
 
 
 def _read(ops, out, key):

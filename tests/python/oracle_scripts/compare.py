@@ -72,6 +72,10 @@ KNOWN_DIFFERENCES = {
         "BeamContact3Dp force: BeamSolid gives the contact force on the soil node (normal plus friction, as "
         "BeamContact3D's force); OpenSeesPy 3.7.1's BeamContact3Dp returns [0, N L / 8, 0] here, the size of "
         "a beam node's contact moment (whose mastermoment agrees with ours), not a force on the soil node",
+    ("beam_contact", "*end?.masterforce"):
+        "BeamEndContact3D(p) masterforce: BeamSolid's tip node also carries the moment r x F of a soil node off "
+        "the face centre (consistent with the face turning with the tip's rotation); OpenSeesPy reports the "
+        "force with zero moments. Forces, displacements and iteration counts agree",
     ("zerolength_contact", "dir?.recontact.step0.force"):
         "zeroLengthContact3D closing again after opening: BeamSolid's friction restarts from the tangential "
         "position at the opening (no force carried through a gap); OpenSeesPy keeps the old stick point",
