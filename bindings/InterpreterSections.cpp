@@ -69,7 +69,8 @@ double readPositive(CommandArgs& a, const char* what) {
 }
 
 void addFibers(const FiberTarget& section, const UniaxialMaterial& material, const std::vector<FiberPoint>& points) {
-  for (const FiberPoint& p : points) section.add(material, p.y, p.z, p.area);
+  if (section.section3d) section.section3d->addFibers(material, points);
+  else section.section2d->addFibers(material, points);
 }
 
 }  // namespace

@@ -49,11 +49,27 @@ void FiberSection2d::addFiber(const UniaxialMaterial& material, double y, double
   initialSums_.stiffness += E;
   initialSums_.stiffY += E * y;
   initialSums_.stiffYY += E * y * y;
+  if (!deferred_) refresh();
+}
+
+void FiberSection2d::addFibers(const UniaxialMaterial& material, const std::vector<FiberPoint>& points) {
+  deferred_ = true;
+  try {
+    for (const FiberPoint& p : points) addFiber(material, p.y, p.area);
+  } catch (...) {
+    deferred_ = false;
+    refresh();
+    throw;
+  }
+  deferred_ = false;
+  refresh();
+}
+
+void FiberSection2d::refresh() {
   // The centroid moved: every fiber's strain follows (sections are filled
   // before any analysis, so this is one pass per fiber at zero deformation).
   if (deformation_.isZero(0.0)) {
-    Fiber& f = fibers_.back();
-    f.material->setTrialStrain(0.0);
+    for (Fiber& f : fibers_) f.material->setTrialStrain(0.0);
     Sums current;
     // Unstrained fibers may still carry stress (initial stress materials).
     for (const Fiber& g : fibers_) {

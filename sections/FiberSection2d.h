@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "materials/uniaxial/UniaxialMaterial.h"
+#include "sections/FiberGeometry.h"
 #include "sections/SectionForceDeformation2d.h"
 
 namespace beamsolid {
@@ -36,6 +37,8 @@ class FiberSection2d : public SectionForceDeformation2d {
 
   // A fiber with its own copy of `material`; throws for area <= 0.
   void addFiber(const UniaxialMaterial& material, double y, double area);
+  // A patch's or layer's fibers at once: the centroid and sums are formed once.
+  void addFibers(const UniaxialMaterial& material, const std::vector<FiberPoint>& points);
   std::size_t numFibers() const { return fibers_.size(); }
   const Fiber& fiber(std::size_t i) const { return fibers_.at(i); }
   double centroid() const { return yBar_; }
@@ -68,6 +71,9 @@ class FiberSection2d : public SectionForceDeformation2d {
 
  private:
   void sumFibers();
+  // The state about the (new) centroid after fibers were added.
+  void refresh();
+  bool deferred_ = false;
 
   std::vector<Fiber> fibers_;
   double area_ = 0.0, areaY_ = 0.0, yBar_ = 0.0;

@@ -29,6 +29,11 @@ FiberSection3d::FiberSection3d(const FiberSection3d& other)
     : SectionForceDeformation(other.tag()),
       torsionalStiffness_(other.torsionalStiffness_),
       torsion_(other.torsion_ ? other.torsion_->clone() : nullptr),
+      area_(other.area_),
+      areaY_(other.areaY_),
+      areaZ_(other.areaZ_),
+      yBar_(other.yBar_),
+      zBar_(other.zBar_),
       deformation_(other.deformation_),
       committedDeformation_(other.committedDeformation_),
       force_(other.force_),
@@ -47,20 +52,39 @@ void FiberSection3d::addFiber(const UniaxialMaterial& material, double y, double
     throw OpenSeesError(context() + ": a fiber needs a positive area and finite coordinates, got y " +
                         std::to_string(y) + ", z " + std::to_string(z) + ", area " + std::to_string(area));
   fibers_.push_back(Fiber{material.clone(), y, z, area});
-  // Incremental: patches add thousands of fibers one by one.
-  const Fiber& f = fibers_.back();
-  const Eigen::Vector3d a(1.0, -y, z);
-  initialTangent_.topLeftCorner<3, 3>() += f.material->initialTangent() * area * a * a.transpose();
-  f.material->setTrialStrain(deformation_[0] - y * deformation_[1] + z * deformation_[2]);
-  force_.head<3>() += f.material->stress() * area * a;
-  tangent_.topLeftCorner<3, 3>() += f.material->tangent() * area * a * a.transpose();
+  area_ += area;
+  areaY_ += area * y;
+  areaZ_ += area * z;
+  yBar_ = areaY_ / area_;
+  zBar_ = areaZ_ / area_;
+  // The centroid moved, so every fiber's lever arm did: sum again (once per
+  // patch or layer when they come through addFibers).
+  if (!deferred_) refresh();
+}
+
+void FiberSection3d::addFibers(const UniaxialMaterial& material, const std::vector<FiberPoint>& points) {
+  deferred_ = true;
+  try {
+    for (const FiberPoint& p : points) addFiber(material, p.y, p.z, p.area);
+  } catch (...) {
+    deferred_ = false;
+    refresh();
+    throw;
+  }
+  deferred_ = false;
+  refresh();
+}
+
+void FiberSection3d::refresh() {
+  formInitialTangent();
+  setTrialDeformation(deformation_);
 }
 
 void FiberSection3d::formInitialTangent() {
   initialTangent_.setZero();
   for (const Fiber& f : fibers_) {
     const double stiffness = f.material->initialTangent() * f.area;
-    const Eigen::Vector3d a(1.0, -f.y, f.z);
+    const Eigen::Vector3d a(1.0, -(f.y - yBar_), f.z - zBar_);
     initialTangent_.topLeftCorner<3, 3>() += stiffness * a * a.transpose();
   }
   initialTangent_(3, 3) = torsion_ ? torsion_->initialTangent() : torsionalStiffness_;
@@ -68,7 +92,7 @@ void FiberSection3d::formInitialTangent() {
 
 void FiberSection3d::setTrialDeformation(const Vector4& e) {
   deformation_ = e;
-  for (Fiber& f : fibers_) f.material->setTrialStrain(e[0] - f.y * e[1] + f.z * e[2]);
+  for (Fiber& f : fibers_) f.material->setTrialStrain(e[0] - (f.y - yBar_) * e[1] + (f.z - zBar_) * e[2]);
   if (torsion_) torsion_->setTrialStrain(e[3]);
   sumFibers();
 }
@@ -80,15 +104,16 @@ void FiberSection3d::sumFibers() {
   for (const Fiber& f : fibers_) {
     const double fiberForce = f.material->stress() * f.area;
     const double fiberStiffness = f.material->tangent() * f.area;
+    const double y = f.y - yBar_, z = f.z - zBar_;
     fP += fiberForce;
-    fMz -= fiberForce * f.y;
-    fMy += fiberForce * f.z;
+    fMz -= fiberForce * y;
+    fMy += fiberForce * z;
     kPP += fiberStiffness;
-    kPZ -= fiberStiffness * f.y;
-    kPY += fiberStiffness * f.z;
-    kZZ += fiberStiffness * f.y * f.y;
-    kZY -= fiberStiffness * f.y * f.z;
-    kYY += fiberStiffness * f.z * f.z;
+    kPZ -= fiberStiffness * y;
+    kPY += fiberStiffness * z;
+    kZZ += fiberStiffness * y * y;
+    kZY -= fiberStiffness * y * z;
+    kYY += fiberStiffness * z * z;
   }
   force_ << fP, fMz, fMy, torsion_ ? torsion_->stress() : torsionalStiffness_ * deformation_[3];
   tangent_ << kPP, kPZ, kPY, 0.0,  //

@@ -320,9 +320,14 @@ TEST(FiberSection3d, FiberResponses) {
   s("fiber", -0.5, 0.0, 0.01, 1);
   s("fiber", 0.45, 0.0, 0.02, 2);
   FiberSection3d& sec = fiberSectionOf(s, 1);
+  // The reference axis is the area centroid, as in OpenSees:
+  // yBar = (0.5 * 0.01 - 0.5 * 0.01 + 0.45 * 0.02) / 0.04 = 0.225.
+  const double yBar = 0.225;
+  EXPECT_NEAR(sec.centroidY(), yBar, 1e-15);
+  EXPECT_EQ(sec.centroidZ(), 0.0);
   const double eps = 1e-3, kappa = 1e-3;
   sec.setTrialDeformation(Vector4(eps, kappa, 0.0, 0.0));
-  const double strain[3] = {eps - 0.5 * kappa, eps + 0.5 * kappa, eps - 0.45 * kappa};
+  const double strain[3] = {eps - (0.5 - yBar) * kappa, eps - (-0.5 - yBar) * kappa, eps - (0.45 - yBar) * kappa};
   // Nearest fiber to (0.49, 0): fiber 0 (material 1); with material 2 requested: fiber 2.
   auto r = sec.setResponse({"fiber", "0.49", "0", "stressStrain"});
   ASSERT_TRUE(r);
@@ -343,7 +348,8 @@ TEST(FiberSection3d, FiberResponses) {
   r = sec.setResponse({"force"});
   ASSERT_TRUE(r);
   EXPECT_NEAR(r.value()[0], 100 * 0.01 * (strain[0] + strain[1]) + 300 * 0.02 * strain[2], 1e-14);
-  EXPECT_NEAR(r.value()[1], -(100 * 0.01 * (0.5 * strain[0] - 0.5 * strain[1]) + 300 * 0.02 * 0.45 * strain[2]),
+  EXPECT_NEAR(r.value()[1],
+              -(100 * 0.01 * ((0.5 - yBar) * strain[0] + (-0.5 - yBar) * strain[1]) + 300 * 0.02 * (0.45 - yBar) * strain[2]),
               1e-14);
   r = sec.setResponse({"stiffness"});
   ASSERT_TRUE(r);

@@ -116,6 +116,39 @@ def _sections(ops, out):
     out["sections.weight"] = ops.sectionWeight(1)
 
 
+def _t_section(ops, out):
+    """A 3D fiber T-section (flange off the fiber origin): the reference axis is its area
+    centroid, so the axial load alone gives no bending; then bending about both axes."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, 3.0, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.uniaxialMaterial("Steel01", 1, 350.0e3, 200.0e6, 0.01)
+    ops.section("Fiber", 1, "-GJ", 1.0e4)
+    ops.patch("rect", 1, 10, 2, 0.30, -0.15, 0.35, 0.15)
+    ops.patch("rect", 1, 12, 2, 0.0, -0.02, 0.30, 0.02)
+    ops.layer("straight", 1, 3, 2.0e-4, 0.05, -0.1, 0.05, 0.1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.beamIntegration("Lobatto", 1, 1, 4)
+    ops.element("forceBeamColumn", 1, 1, 2, 1, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 500.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    out["tsection.axial.code"] = _analysis(ops)
+    out["tsection.axial.disp"] = ops.nodeDisp(2)
+    out["tsection.axial.section"] = ops.eleResponse(1, "section", 1, "force")
+    ops.loadConst("-time", 0.0)
+    ops.pattern("Plain", 2, 1)
+    ops.load(2, 0.0, 40.0, 15.0, 0.0, 0.0, 0.0)
+    ops.integrator("LoadControl", 0.25)
+    codes = [ops.analyze(1) for _ in range(4)]
+    out["tsection.bent.codes"] = codes
+    out["tsection.bent.disp"] = ops.nodeDisp(2)
+    out["tsection.bent.base"] = ops.eleResponse(1, "section", 1, "deformation")
+    out["tsection.bent.fiber"] = ops.eleResponse(1, "section", 1, "fiber", 0.326, 0.1, "stressStrain")
+
+
 def _moved_node(ops, out):
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 2)
@@ -142,6 +175,7 @@ def run(ops):
     _diaphragm_frame(ops, out)
     _rigid_links_2d(ops, out)
     _sections(ops, out)
+    _t_section(ops, out)
     _moved_node(ops, out)
     ops.wipe()
     return out
