@@ -91,19 +91,22 @@ bool ForceBeamColumn3d::iterate(const Vector6& v) {
     const double work = std::fabs(dq.dot(dv)) + sectionWork;
     if (!std::isfinite(work)) return false;
     if (iteration == 0) reference = work;
-    // A changed v is always applied once, however small: the global Newton
-    // iteration relies on the element following every increment.
-    if ((iteration > 0 || work == 0.0) && work <= options().tolerance * std::max(reference, std::fabs(q_.dot(v)))) {
-      kb_ = flexibility.solve(Matrix6::Identity());
-      return true;
-    }
-    if (iteration >= options().maxIterations) return false;
+    // The correction is applied before the test (as in OpenSees): the
+    // element always follows a changed v, and the q it answers with carries
+    // the last correction, so Newton keeps its quadratic rate. tol bounds the
+    // work of the residuals itself (force x length in the model's units), as
+    // OpenSees' tol; the ratio 1e-28 only ends iterations on round-off.
     ++lastIterations_;
     q_ += dq;
     for (int i = 0; i < n; ++i) {
       const Vector4 de = flexibility_[i] * (unbalance_[i] + forceInterpolation(xi_[i]) * dq);
       sections_[i]->setTrialDeformation(sections_[i]->deformation() + de);
     }
+    if (work <= options().tolerance || work <= 1e-28 * std::max(reference, std::fabs(q_.dot(v)))) {
+      kb_ = flexibility.solve(Matrix6::Identity());
+      return true;
+    }
+    if (iteration + 1 >= options().maxIterations) return false;
   }
 }
 
@@ -141,7 +144,10 @@ void ForceBeamColumn3d::ensureState() {
 void ForceBeamColumn3d::update() {
   transf_->update();
   const Vector6 v = transf_->basicTrialDisp();
-  if (converged_ && !loadsChanged_ && v == solvedDeformation_) return;
+  // New element loads alone (v unchanged, as right after a load step is
+  // applied) wait for the next change of v, as in OpenSees: the first
+  // residual of a step then sees them through p0 only.
+  if (converged_ && v == solvedDeformation_) return;
   solveState(v);
 }
 
@@ -153,6 +159,20 @@ ForceBeamColumn3d::Vector6 ForceBeamColumn3d::basicForce() {
 const ForceBeamColumn3d::Matrix6& ForceBeamColumn3d::basicStiffness() {
   ensureState();
   return kb_;
+}
+
+ForceBeamColumn3d::Vector6 ForceBeamColumn3d::plasticDeformation() {
+  // v minus the elastic deformations of the section forces b q + s_load:
+  // an elastic element under element loads has none (as OpenSees).
+  Vector6 elastic = Vector6::Zero();
+  Matrix4 f;
+  for (int i = 0; i < numSections(); ++i) {
+    const SectionForceDeformation& s = *sections_[i];
+    sectionFlexibility(s.initialTangent(), s.initialTangent(), f);
+    const Eigen::Matrix<double, 4, 6> b = forceInterpolation(xi_[i]);
+    elastic += weights_[i] * length_ * b.transpose() * f * (b * q_ + loadForces_[i]);
+  }
+  return basicDeformation() - elastic;
 }
 
 void ForceBeamColumn3d::commitState() {
@@ -222,6 +242,9 @@ namespace {
 std::unique_ptr<Element> buildForceBeamColumn3d(CommandArgs& args, Domain& domain, const std::string& type) {
   if (domain.spaceDim() == 2) return ForceBeamColumn2d::build(args, domain, type);
   auto d = SectionBeamColumn3d::parse(args, domain, type, BeamIntegration::Rule::Lobatto, true);
+  // OpenSees' force-based element takes '-cMass' but keeps its mass lumped
+  // (checked against OpenSeesPy, as in 2D).
+  d.options.consistentMass = false;
   const int tag = d.tag;
   return std::make_unique<ForceBeamColumn3d>(tag, std::move(d));
 }

@@ -40,6 +40,7 @@ class ForceBeamColumn3d : public SectionBeamColumn3d {
   void addLoad(const ElementLoad& load, double factor) override;
 
   Vector6 basicForce() override;
+  Vector6 plasticDeformation() override;
   const Matrix6& basicStiffness() override;
 
   // Force interpolation matrix b(xi): section forces from basic forces.

@@ -217,7 +217,7 @@ void SectionBeamColumn3d::printJSON(std::ostream& os) const {
 
 SectionBeamColumn3d::Definition SectionBeamColumn3d::parse(CommandArgs& args, Domain& domain, const std::string& type,
                                                            BeamIntegration::Rule defaultRule, bool forceBased) {
-  BeamColumnCommand c = BeamColumnCommand::parse(args, domain, type, defaultRule, forceBased, false);
+  BeamColumnCommand c = BeamColumnCommand::parse(args, domain, type, defaultRule, forceBased, true);
   Definition d;
   d.tag = c.tag;
   d.nodeI = c.nodeI;

@@ -78,7 +78,9 @@ class SectionBeamColumn3d : public Element {
   // Basic deformations of the current trial state.
   Vector6 basicDeformation() const { return transf_->basicTrialDisp(); }
   // v - kb0^-1 q: basic deformations beyond the initial (elastic) response.
-  Vector6 plasticDeformation();
+  // v minus the elastic deformations of the basic forces (the force-based
+  // element also removes its element loads').
+  virtual Vector6 plasticDeformation();
 
  protected:
   void setDomain(Domain& domain) override;

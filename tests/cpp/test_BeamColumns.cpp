@@ -563,7 +563,7 @@ TEST(BeamColumns, CommandErrors) {
   expectError("beamIntegration 9 does not exist", "element", "forceBeamColumn", 1, 1, 2, 1, 9);
   expectError("geomTransf 8 does not exist", "element", "forceBeamColumn", 1, 1, 2, 8, 1);
   expectError("section 7 does not exist", "element", "dispBeamColumn", 1, 1, 2, 5, 7, 1);
-  expectError("'-cMass' is not available", "element", "forceBeamColumn", 1, 1, 2, 1, 1, "-cMass");
+  expectError("massPerLength", "element", "forceBeamColumn", 1, 1, 2, 1, 1, "-mass");
   expectError("'-iter' is only for force-based", "element", "dispBeamColumn", 1, 1, 2, 1, 1, "-iter", 5, 1e-10);
   expectError("needs 6", "element", "forceBeamColumn", 1, 2, 3, 1, 1);
   expectError("longer than the element", "element", "forceBeamColumn", 1, 1, 2, 1, 2);
