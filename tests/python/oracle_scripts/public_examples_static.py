@@ -18,6 +18,9 @@
   tolerance OpenSees' force-based element accepts states whose section
   forces are off b q by ~1e-6 (relative 1e-9), and its Newton iterations
   then differ from BeamSolid's, which iterates the element on.
+- Quad meshes made with block2D (straight, and curved by an edge point
+  and the centre point), joined by equalDOF: coordinates, connectivity,
+  displacements and stresses.
 - A 3D frame of elasticBeamColumn members with '-mass', 0.0, '-lMass' and
   nodal masses: eigenvalues (default solver), then a static lateral load.
 """
@@ -253,6 +256,34 @@ def _frame_3d(ops, out):
     out["frame3d.localForce"] = [ops.eleResponse(e, "localForce") for e in (1, 5, 9, 13)]
 
 
+def _block_quads(ops, out):
+    # Two layered block2D meshes (the second curved by edge and centre points)
+    # sharing a line of nodes through equalDOF, fixed at the base, loaded on top.
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 2)
+    ops.nDMaterial("ElasticIsotropic", 1, 3000.0, 0.3)
+    ops.nDMaterial("ElasticIsotropic", 2, 1200.0, 0.2)
+    ops.block2D(6, 2, 1, 1, "quad", 1.0, "PlaneStrain", 1, 1, 0.0, 0.0, 2, 12.0, 0.0, 3, 12.0, 3.0, 4, 0.0, 3.0)
+    node0 = max(ops.getNodeTags()) + 1
+    ele0 = max(ops.getEleTags()) + 1
+    ops.block2D(6, 3, node0, ele0, "quad", 1.0, "PlaneStress", 2,
+                1, 0.0, 3.0, 2, 12.0, 3.0, 3, 11.0, 7.0, 4, 1.0, 7.0, 7, 6.0, 7.8, 9, 6.3, 5.1)
+    for i in range(7):
+        ops.fix(1 + i, 1, 1)
+        ops.equalDOF(15 + i, node0 + i, 1, 2)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    top = node0 + 3 * 7
+    for i in range(7):
+        ops.load(top + i, 0.5, -1.0)
+    ops.analysis("Static")
+    out["block.code"] = ops.analyze(1)
+    out["block.coords"] = [ops.nodeCoord(n) for n in sorted(ops.getNodeTags())]
+    out["block.eleNodes"] = [ops.eleNodes(e) for e in sorted(ops.getEleTags())]
+    out["block.disp"] = [ops.nodeDisp(n) for n in sorted(ops.getNodeTags())]
+    out["block.stresses"] = [ops.eleResponse(e, "stresses") for e in sorted(ops.getEleTags())]
+
+
 def run(ops):
     out = {}
     _krylov(ops, out)
@@ -260,5 +291,6 @@ def run(ops):
     _lumped_flags(ops, out)
     _rc_cantilever(ops, out)
     _frame_3d(ops, out)
+    _block_quads(ops, out)
     ops.wipe()
     return out
