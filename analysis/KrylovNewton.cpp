@@ -1,5 +1,6 @@
 #include "analysis/KrylovNewton.h"
 
+#include <algorithm>
 #include <memory>
 
 #include "analysis/AnalysisModel.h"
@@ -53,11 +54,11 @@ int KrylovNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator,
       correction = U * c + (v - W * c);
     }
     system.x() = correction;
+    corrections_.push_back(correction);
     if (integrator.update(model, system.x()) < 0) {
       lastError_ = "the integrator could not update the step";
       return -3;
     }
-    corrections_.push_back(system.x());  // what was applied (path-following integrators add their share)
     previous = v;
     integrator.formUnbalance(model);
     switch (test.test(system)) {
@@ -68,7 +69,9 @@ int KrylovNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator,
         return -3;
       case ConvergenceTest::Result::Continue: break;
     }
-    if (dim >= maxDimension_) {
+    // The subspace cannot hold more independent directions than there are
+    // equations: the effective maximum is min(maxDim, size), as in OpenSees.
+    if (dim >= std::min<int>(maxDimension_, static_cast<int>(v.size()))) {
       // The subspace is full: new tangent (per '-iterate'), fresh subspace.
       corrections_.clear();
       changes_.clear();
@@ -96,6 +99,7 @@ std::unique_ptr<Algorithm> buildKrylovNewton(CommandArgs& args, Domain&) {
     if (opt == "-iterate") iterate = readTangent(args, "-iterate");
     else if (opt == "-increment") increment = readTangent(args, "-increment");
     else if (opt == "-maxDim") maxDim = args.nextInt("maxDim");
+    else if (opt == "-initial") continue;  // OpenSees accepts and ignores it (scripts pass it)
     else args.fail("unknown option '" + opt + "' (expected -iterate, -increment or -maxDim)");
   }
   if (maxDim < 1) args.fail("-maxDim must be at least 1, got " + std::to_string(maxDim));

@@ -26,6 +26,7 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"nDMaterial", &Interpreter::nDMaterial},
       {"geomTransf", &Interpreter::geomTransf},
       {"element", &Interpreter::element},
+      {"block2D", &Interpreter::block2D},
       {"timeSeries", &Interpreter::timeSeries},
       {"pattern", &Interpreter::pattern},
       {"load", &Interpreter::load},

@@ -55,6 +55,7 @@ class Interpreter {
   Result nDMaterial(CommandArgs&);
   Result geomTransf(CommandArgs&);
   Result element(CommandArgs&);
+  Result block2D(CommandArgs&);
   Result timeSeries(CommandArgs&);
   Result pattern(CommandArgs&);
   Result load(CommandArgs&);

@@ -47,6 +47,8 @@ BeamColumnCommand BeamColumnCommand::parse(CommandArgs& args, Domain& domain, co
     } else if (args.nextFlag("-cMass")) {
       if (forceBased && !forceCMass) args.fail("'-cMass' is not available: " + type + " has a lumped mass only");
       d.options.consistentMass = true;
+    } else if (args.nextFlag("-lMass")) {
+      // Lumped is the default; OpenSees accepts the flag and '-cMass' wins whatever the order.
     } else if (args.nextFlag("-iter")) {
       if (!forceBased) args.fail("'-iter' is only for force-based elements (forceBeamColumn)");
       std::size_t at = args.position();
@@ -69,7 +71,7 @@ BeamColumnCommand BeamColumnCommand::parse(CommandArgs& args, Domain& domain, co
         }
       if (!known) args.fail("unknown integration rule '" + name + "' (expected Lobatto, Legendre, Radau or NewtonCotes)");
     } else if (args.nextIsString()) {
-      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass'" +
+      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass', '-lMass'" +
                 (forceBased ? std::string(", '-iter'") : "") + (!forceBased || forceCMass ? ", '-cMass'" : "") +
                 (olderForm ? ", '-integration'" : "") + ")");
     } else {

@@ -205,12 +205,14 @@ std::unique_ptr<Element> ElasticBeam2d::build(CommandArgs& args, Domain& domain,
       if (p.massPerLength < 0.0) args.failAt(at, "massPerLength", "a number >= 0");
     } else if (args.nextFlag("-cMass")) {
       p.consistentMass = true;
+    } else if (args.nextFlag("-lMass")) {
+      // Lumped is the default; OpenSees accepts the flag and '-cMass' wins whatever the order.
     } else if (args.nextFlag("-release")) {
       const std::size_t at = args.position();
       p.release = args.nextInt("releaseCode");
       if (p.release < 0 || p.release > 3) args.failAt(at, "releaseCode", "0, 1 (I), 2 (J) or 3 (both)");
     } else if (args.nextIsString()) {
-      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass', '-cMass' or '-release')");
+      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass', '-cMass', '-lMass' or '-release')");
     } else {
       args.expectEnd();
     }

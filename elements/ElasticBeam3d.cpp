@@ -245,8 +245,10 @@ std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
       if (p.massPerLength < 0.0) args.failAt(at, "massPerLength", "a number >= 0");
     } else if (args.nextFlag("-cMass")) {
       p.consistentMass = true;
+    } else if (args.nextFlag("-lMass")) {
+      // Lumped is the default; OpenSees accepts the flag and '-cMass' wins whatever the order.
     } else if (args.nextIsString()) {
-      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass' or '-cMass')");
+      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass', '-cMass' or '-lMass')");
     } else {
       args.expectEnd();
     }

@@ -11,12 +11,13 @@ WFSection2d::WFSection2d(int tag, const UniaxialMaterial& material, const Dimens
   const double webHeight = w.d - 2.0 * w.tf;
   const double webStrip = webHeight / w.webFibers;
   const double flangeStrip = w.tf / w.flangeFibers;
-  // Bottom flange, web, top flange, each from the bottom up.
+  // Fibers run from the top of the section down (top flange, web, bottom
+  // flange): OpenSees numbers them so, and 'fiber $i' responses use that order.
   for (int k = 0; k < w.flangeFibers; ++k)
-    addFiber(material, -0.5 * w.d + (k + 0.5) * flangeStrip, w.bf * flangeStrip);
-  for (int k = 0; k < w.webFibers; ++k) addFiber(material, -0.5 * webHeight + (k + 0.5) * webStrip, w.tw * webStrip);
+    addFiber(material, 0.5 * w.d - (k + 0.5) * flangeStrip, w.bf * flangeStrip);
+  for (int k = 0; k < w.webFibers; ++k) addFiber(material, 0.5 * webHeight - (k + 0.5) * webStrip, w.tw * webStrip);
   for (int k = 0; k < w.flangeFibers; ++k)
-    addFiber(material, 0.5 * webHeight + (k + 0.5) * flangeStrip, w.bf * flangeStrip);
+    addFiber(material, -0.5 * webHeight - (k + 0.5) * flangeStrip, w.bf * flangeStrip);
 }
 
 std::unique_ptr<SectionForceDeformation2d> WFSection2d::clone() const { return std::make_unique<WFSection2d>(*this); }

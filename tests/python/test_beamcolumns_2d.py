@@ -364,3 +364,57 @@ def test_2d_section_command_errors(ops):
         ops.section("Aggregator", 11, 1, "P", 1, "Mz")
     with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 12.*2D model"):
         ops.section("WFSection2d", 12, 1, 10.0, 1.0, 6.0, 2.0, 3, 2)
+
+
+def test_wide_flange_fibers_are_numbered_from_the_top_down(ops):
+    # OpenSees numbers WFSection2d fibers top flange first, then the web, then
+    # the bottom flange, each from the top down: 'fiber $i' follows that order.
+    E, d, tw, bf, tf, nfw, nff = 1000.0, 10.0, 1.0, 6.0, 2.0, 3, 2
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    ops.uniaxialMaterial("Elastic", 1, E)
+    ops.section("WFSection2d", 1, 1, d, tw, bf, tf, nfw, nff)
+    zero_length_section(ops, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 0.0, 0.0, 1.0)
+    static(ops, ("DisplacementControl", 2, 3, 1e-3))
+    assert ops.analyze(1) == 0
+    kappa = ops.nodeDisp(2, 3)
+    web = d - 2 * tf
+    ys = [d / 2 - (k + 0.5) * tf / nff for k in range(nff)]
+    ys += [web / 2 - (k + 0.5) * web / nfw for k in range(nfw)]
+    ys += [-web / 2 - (k + 0.5) * tf / nff for k in range(nff)]
+    data = np.reshape(ops.eleResponse(1, "section", "fiberData"), (-1, 5))
+    assert data[:, 0] == pytest.approx(ys, abs=1e-14)
+    for i, y in enumerate(ys):
+        stress, strain = ops.eleResponse(1, "section", "fiber", i, "stressStrain")
+        assert strain == pytest.approx(-y * kappa, rel=1e-12, abs=1e-18)
+        assert stress == pytest.approx(-E * y * kappa, rel=1e-12, abs=1e-15)
+
+
+@pytest.mark.parametrize("element", ["elasticBeamColumn", "dispBeamColumn"])
+def test_lumped_mass_flag_is_the_default_and_cmass_wins(ops, element):
+    # A cantilever of one element, L = 10, EA = 100, m = 2 per length: the
+    # lumped axial mode has omega^2 = EA / (L * m L / 2) = 1.0, the consistent
+    # one (m L / 3 at the tip with the free end) 1.5 (as OpenSees, the
+    # '-lMass' flag changes nothing and '-cMass' wins in any order).
+    def axial_omega2(*flags):
+        ops.wipe()
+        ops.model("basic", "-ndm", 2, "-ndf", 3)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 10.0, 0.0)
+        ops.fix(1, 1, 1, 1)
+        ops.fix(2, 0, 1, 1)
+        ops.geomTransf("Linear", 1)
+        if element == "elasticBeamColumn":
+            ops.element(element, 1, 1, 2, 1.0, 100.0, 1.0, 1, "-mass", 2.0, *flags)
+        else:
+            ops.section("Elastic", 1, 100.0, 1.0, 1.0)
+            ops.beamIntegration("Lobatto", 1, 1, 3)
+            ops.element(element, 1, 1, 2, 1, 1, "-mass", 2.0, *flags)
+        return ops.eigen("-fullGenLapack", 1)[0]
+
+    assert axial_omega2() == pytest.approx(1.0, rel=1e-12)
+    assert axial_omega2("-lMass") == pytest.approx(1.0, rel=1e-12)
+    assert axial_omega2("-cMass", "-lMass") == pytest.approx(1.5, rel=1e-12)
+    assert axial_omega2("-lMass", "-cMass") == pytest.approx(1.5, rel=1e-12)
