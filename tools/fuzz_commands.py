@@ -1,7 +1,8 @@
 """The command fuzzer: random command sequences against small live models.
 
-A sequence is a fresh small model (beam and brick nodes, materials, a
-transformation, a beam, a load pattern), then `calls_per_sequence` random
+A sequence is a fresh small model (3D: beam and brick nodes, materials, a
+transformation, a beam, a load pattern; every other sequence 2D: a frame,
+quad and truss nodes), then `calls_per_sequence` random
 commands, then `wipe`. A command is either a valid call from TEMPLATES, used
 as is or mutated (an argument replaced, dropped or added), or a random one
 (valid type names, wrong types, wrong counts, unknown tags, huge and negative
@@ -94,6 +95,49 @@ TEMPLATES = [
     ("systemSize", ()), ("setParameter", ("-val", 0.5, "-ele", 1, "friction")),
     ("updateMaterialStage", ("-material", 1, "-stage", 1)), ("InitialStateAnalysis", ("on",)),
     ("testUniaxialMaterial", (1,)), ("setStrain", (0.01,)), ("getStress", ()), ("getTangent", ()),
+    # Materials, sections and commands of issue 15 (they work in every space).
+    ("uniaxialMaterial", ("Hardening", 8, 100.0, 1.0, 5.0, 5.0)),
+    ("uniaxialMaterial", ("Hysteretic", 9, 1.0, 0.01, 1.5, 0.05, -1.0, -0.01, -1.5, -0.05, 0.8, 0.2, 0.0, 0.0, 0.5)),
+    ("uniaxialMaterial", ("MultiLinear", 10, 0.01, 1.0, 0.02, 1.5, 0.05, 1.6)),
+    ("uniaxialMaterial", ("ElasticMultiLinear", 11, "-strain", -1.0, 0.0, 1.0, "-stress", -2.0, 0.0, 1.0)),
+    ("uniaxialMaterial", ("Parallel", 12, 1, 2)), ("uniaxialMaterial", ("Series", 13, 1, 8)),
+    ("uniaxialMaterial", ("MinMax", 14, 2, "-min", -0.02, "-max", 0.02)),
+    ("uniaxialMaterial", ("InitStrainMaterial", 15, 1, 0.001)),
+    ("section", ("Aggregator", 3, 1, "T", "-section", 2)),
+    ("element", ("zeroLengthSection", 13, 3, 4, 1, "-orient", 1.0, 0.0, 0.0, 0.0, 1.0, 0.0)),
+    ("rigidDiaphragm", (3, 2, 3, 4)), ("basicForce", (1,)), ("sectionForce", (4, 1)), ("sectionLocation", (4,)),
+    ("nodeBounds", ()), ("getFixedNodes", ()), ("getFixedDOFs", (1,)), ("getConstrainedNodes", ()),
+    ("getRetainedNodes", (3,)), ("nodeResponse", (2, 1, 1)), ("setNodeCoord", (13, 1, 2.0)),
+    ("setNodeDisp", (2, 1, 0.01, "-commit")), ("domainChange", ()), ("numIter", ()),
+]
+
+# The 2D model of build_2d() (nodes 1-4 with ndf 3 in a frame, 5-9 with ndf 2
+# on a quad and a truss): half the sequences start from it.
+TEMPLATES_2D = [
+    ("node", (10, 2.0, 2.0)), ("fix", (2, 1, 1, 0)), ("mass", (3, 1.0, 1.0, 0.0)), ("equalDOF", (3, 4, 1)),
+    ("rigidLink", ("beam", 3, 4)), ("rigidLink", ("bar", 6, 7)),
+    ("geomTransf", ("PDelta", 2)), ("geomTransf", ("Corotational", 3)),
+    ("geomTransf", ("Linear", 4, "-jntOffset", 0.1, 0.0, 0.0, 0.1)),
+    ("section", ("Elastic", 1, 100.0, 1.0, 1.0)), ("section", ("Elastic", 4, 100.0, 1.0, 1.0, 40.0, 0.8)),
+    ("section", ("Fiber", 2)), ("patch", ("rect", 1, 4, 1, -0.2, -0.1, 0.2, 0.1)),
+    ("layer", ("straight", 1, 3, 0.01, 0.15, 0.0, -0.15, 0.0)), ("fiber", (0.1, 0.0, 0.01, 1)),
+    ("section", ("WFSection2d", 3, 1, 0.3, 0.01, 0.2, 0.02, 4, 2)),
+    ("section", ("Aggregator", 5, 1, "Vy", "-section", 2)),
+    ("beamIntegration", ("Lobatto", 1, 2, 3)),
+    ("element", ("elasticBeamColumn", 2, 2, 3, 1.0, 100.0, 1.0, 1)),
+    ("element", ("elasticBeamColumn", 3, 3, 4, 1.0, 100.0, 1.0, 1, "-release", 3)),
+    ("element", ("forceBeamColumn", 4, 3, 4, 1, 1)), ("element", ("dispBeamColumn", 5, 2, 4, 1, 1, "-cMass")),
+    ("element", ("nonlinearBeamColumn", 6, 2, 4, 3, 2, 1)),
+    ("element", ("quad", 7, 5, 6, 7, 8, 1.0, "PlaneStrain", 1, 0.5, 1.0, 0.0, -1.0)),
+    ("element", ("quad", 8, 5, 6, 7, 8, 0.1, "PlaneStress", 1)), ("element", ("truss", 9, 6, 9, 1.0, 1)),
+    ("element", ("corotTruss", 10, 7, 9, 1.0, 1)), ("element", ("zeroLength", 11, 3, 4, "-mat", 1, 1, "-dir", 1, 3)),
+    ("element", ("zeroLengthSection", 12, 3, 4, 1)),
+    ("load", (3, 1.0, 0.0, 0.0)), ("load", (7, 0.0, -1.0)), ("sp", (6, 1, 0.01)),
+    ("eleLoad", ("-ele", 1, "-type", "-beamUniform", -1.0)), ("eleLoad", ("-ele", 7, "-type", "-selfWeight", 0.0, -1.0)),
+    ("block2D", (2, 2, 1, 100, "quad", 1.0, "PlaneStrain", 1, 1, 0.0, 0.0, 2, 1.0, 0.0, 3, 1.0, 1.0, 4, 0.0, 1.0)),
+    ("integrator", ("DisplacementControl", 3, 1, 0.01)), ("analysis", ("Static",)), ("analyze", (2,)),
+    ("eigen", (1,)), ("eleResponse", (4, "section", 1, "force")), ("eleResponse", (7, "stresses")),
+    ("nodeDisp", (3,)), ("reactions", ()), ("remove", ("ele", 2)),
 ]
 
 # loadPlugin would dlopen random paths; nothing else is left out.
@@ -127,6 +171,24 @@ def build(m):
     m.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.3)
     m.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
     m.element("elasticBeamColumn", 1, 1, 2, 1.0, 100.0, 40.0, 1.0, 1.0, 1.0, 1)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+
+
+def build_2d(m):
+    """The small 2D model of the other sequences."""
+    m.model("basic", "-ndm", 2, "-ndf", 3)
+    for i, (x, y) in enumerate([(0.0, 0.0), (2.0, 0.0), (0.0, 1.0), (2.0, 1.0)], start=1):
+        m.node(i, x, y)
+    m.model("basic", "-ndm", 2, "-ndf", 2)
+    for i, (x, y) in enumerate([(3.0, 0.0), (4.0, 0.0), (4.0, 1.0), (3.0, 1.0), (5.0, 0.5)], start=5):
+        m.node(i, x, y)
+    m.fix(1, 1, 1, 1)
+    m.fix(5, 1, 1)
+    m.uniaxialMaterial("Elastic", 1, 100.0)
+    m.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.3)
+    m.geomTransf("Linear", 1)
+    m.element("elasticBeamColumn", 1, 1, 3, 1.0, 100.0, 1.0, 1)
     m.timeSeries("Linear", 1)
     m.pattern("Plain", 1, 1)
 
@@ -177,15 +239,18 @@ def run(seed, sequences, calls_per_sequence, first=0, trace=None, max_findings=2
     types = {name: beamsolid.registered_types(name) for name in TYPED_COMMANDS}
     commands = [c for c in beamsolid.command_names() if c not in SKIPPED_COMMANDS]
     templates = [t for t in TEMPLATES if t[0] in commands]
+    templates_2d = [t for t in TEMPLATES_2D + TEMPLATES[-20:] if t[0] in commands]
     counts = {"seed": seed, "first": first, "sequences": 0, "calls": 0, "ok": 0, "errors": 0, "wipe_errors": 0,
               "findings": 0, "finding_details": []}
     m = beamsolid.Model()
     for index in range(first, first + sequences):
         rng = sequence_rng(seed, index)
-        build(m)
+        two_d = index % 2 == 1
+        start = build_2d if two_d else build
+        start(m)
         call = 0
         while call < calls_per_sequence:
-            name, args = random_call(rng, commands, types, templates)
+            name, args = random_call(rng, commands, types, templates_2d if two_d else templates)
             if name == "wipe" and rng.random() < 0.9:
                 continue  # a wipe ends the interesting state: keep it rare
             call += 1
@@ -197,7 +262,7 @@ def run(seed, sequences, calls_per_sequence, first=0, trace=None, max_findings=2
                 getattr(m, name)(*args)
                 counts["ok"] += 1
                 if name == "wipe":
-                    build(m)
+                    start(m)
             except OpenSeesError:
                 counts["errors"] += 1
             except Exception as e:  # any other exception type is a defect
