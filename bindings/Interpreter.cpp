@@ -28,6 +28,8 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"element", &Interpreter::element},
       {"timeSeries", &Interpreter::timeSeries},
       {"pattern", &Interpreter::pattern},
+      {"groundMotion", &Interpreter::groundMotion},
+      {"imposedMotion", &Interpreter::imposedMotion},
       {"load", &Interpreter::load},
       {"sp", &Interpreter::sp},
       {"eleLoad", &Interpreter::eleLoad},

@@ -23,6 +23,7 @@ class PathSeries : public TimeSeries {
   std::string className() const override { return "Path"; }
   double factor(double time) const override;
   double slope(double time) const override;
+  std::optional<double> lastTime() const override { return times_.back(); }
   void print(std::ostream& os) const override;
 
   const std::vector<double>& times() const { return times_; }

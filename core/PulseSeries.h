@@ -15,6 +15,7 @@ class PulseSeries : public TimeSeries {
   std::string className() const override { return "Pulse"; }
   double factor(double time) const override;
   double slope(double) const override { return 0.0; }
+  std::optional<double> lastTime() const override { return tEnd_; }
   void print(std::ostream& os) const override;
 
  private:

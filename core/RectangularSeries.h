@@ -11,6 +11,7 @@ class RectangularSeries : public TimeSeries {
   std::string className() const override { return "Rectangular"; }
   double factor(double time) const override { return time < tStart_ || time > tEnd_ ? 0.0 : cFactor_; }
   double slope(double) const override { return 0.0; }
+  std::optional<double> lastTime() const override { return tEnd_; }
   void print(std::ostream& os) const override;
 
  private:

@@ -16,6 +16,7 @@ class TriangleSeries : public TimeSeries {
   std::string className() const override { return "Triangle"; }
   double factor(double time) const override;
   double slope(double time) const override;
+  std::optional<double> lastTime() const override { return tEnd_; }
   void print(std::ostream& os) const override;
 
  private:

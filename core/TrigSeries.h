@@ -15,6 +15,7 @@ class TrigSeries : public TimeSeries {
   std::string className() const override { return "Trig"; }
   double factor(double time) const override;
   double slope(double time) const override;
+  std::optional<double> lastTime() const override { return tEnd_; }
   void print(std::ostream& os) const override;
 
  private:

@@ -32,4 +32,5 @@ SCRIPTS = (
     "steel_frame_wf",
     "aggregator_2d",
     "time_series",
+    "ground_motion",
 )
