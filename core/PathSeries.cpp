@@ -27,22 +27,25 @@ PathSeries::PathSeries(int tag, std::vector<double> times, std::vector<double> v
          << ") follows time " << i << " (" << times_[i - 1] << ")";
       throw OpenSeesError(os.str());
     }
+  const double span = times_.back() - times_.front();
+  tolerance_ = span > 0.0 ? 1e-10 * span : 1e-12 * std::max(1.0, std::fabs(times_.front()));
 }
 
 long PathSeries::segment(double time) const {
   const long n = static_cast<long>(times_.size());
-  if (time < times_.front()) return -1;
   if (uniform_) {
+    if (time < times_.front()) return -1;
     if (n < 2) return -2;
     const double dt = times_[1] - times_[0];
     const long i = static_cast<long>(std::floor((time - times_.front()) / dt));
     return i >= n - 1 ? -2 : i;
   }
-  if (time > times_.back()) return -2;
+  if (time < times_.front() - tolerance_) return -1;
+  if (time > times_.back() + tolerance_) return -2;
   if (n < 2) return 0;
   // First point strictly after t, minus one: right-continuous at interior points.
   const long i = static_cast<long>(std::upper_bound(times_.begin(), times_.end(), time) - times_.begin()) - 1;
-  return std::min(i, n - 2);
+  return std::clamp(i, 0L, n - 2);
 }
 
 double PathSeries::factor(double time) const {
@@ -50,7 +53,8 @@ double PathSeries::factor(double time) const {
   if (i == -1) return 0.0;
   if (i == -2) return uniform_ && useLast_ ? cFactor_ * values_.back() : 0.0;
   if (times_.size() == 1) return cFactor_ * values_.front();
-  const double xi = (time - times_[i]) / (times_[i + 1] - times_[i]);
+  const double t = uniform_ ? time : std::clamp(time, times_.front(), times_.back());
+  const double xi = (t - times_[i]) / (times_[i + 1] - times_[i]);
   return cFactor_ * (values_[i] + xi * (values_[i + 1] - values_[i]));
 }
 

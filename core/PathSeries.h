@@ -10,8 +10,8 @@ namespace beamsolid {
 // Before the first point the factor is 0. The end follows OpenSees (checked
 // with OpenSeesPy): a uniform path (-dt) ends just before its last point,
 // which, like every later time, gives 0, or the last value with useLast; a
-// path with explicit times includes its last point and gives 0 after it,
-// useLast or not. slope() is the slope of the segment holding t (the
+// path with explicit times includes its last point (and times within
+// round-off past it) and gives 0 after it, useLast or not. slope() is the slope of the segment holding t (the
 // segment to the right at an interior point) and 0 outside the path.
 class PathSeries : public TimeSeries {
  public:
@@ -45,6 +45,10 @@ class PathSeries : public TimeSeries {
   double cFactor_;
   bool useLast_;
   bool uniform_;
+  // Explicit times: times within this distance of the ends count as on the
+  // path, so that a time reached by summing increments in floating point
+  // still hits the last point (OpenSees gives 0 just past it).
+  double tolerance_ = 0.0;
 };
 
 }  // namespace beamsolid
