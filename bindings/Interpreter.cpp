@@ -29,6 +29,8 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"block2D", &Interpreter::block2D},
       {"timeSeries", &Interpreter::timeSeries},
       {"pattern", &Interpreter::pattern},
+      {"groundMotion", &Interpreter::groundMotion},
+      {"imposedMotion", &Interpreter::imposedMotion},
       {"load", &Interpreter::load},
       {"sp", &Interpreter::sp},
       {"eleLoad", &Interpreter::eleLoad},

@@ -58,6 +58,8 @@ class Interpreter {
   Result block2D(CommandArgs&);
   Result timeSeries(CommandArgs&);
   Result pattern(CommandArgs&);
+  Result groundMotion(CommandArgs&);
+  Result imposedMotion(CommandArgs&);
   Result load(CommandArgs&);
   Result sp(CommandArgs&);
   Result eleLoad(CommandArgs&);
@@ -162,6 +164,7 @@ class Interpreter {
   Result nodeVectorQuery(CommandArgs&, const char* what, const Vector& (Node::*get)() const);
   void requireModel(CommandArgs& a) const;
   LoadPattern& currentPattern(CommandArgs& a) const;
+  Result uniformExcitation(CommandArgs& a);
   void ensureAnalysisDefaults();
 
   std::unique_ptr<Domain> domain_;

@@ -5,7 +5,9 @@
 
 #include "bindings/Interpreter.h"
 #include "core/OpenSeesError.h"
+#include "core/MultipleSupportPattern.h"
 #include "core/Registry.h"
+#include "core/UniformExcitation.h"
 
 namespace beamsolid {
 
@@ -349,8 +351,17 @@ Result Interpreter::element(CommandArgs& a) {
 
 Result Interpreter::pattern(CommandArgs& a) {
   const std::string type = a.nextString("type");
+  if (type == "UniformExcitation") return uniformExcitation(a);
+  if (type == "MultipleSupport") {
+    const int tag = a.nextInt("patternTag");
+    a.setContext("pattern MultipleSupport " + std::to_string(tag));
+    if (!a.done()) a.failAt(a.position(), "argument", "nothing after the tag");
+    domain_->addPattern(std::make_unique<MultipleSupportPattern>(tag), a.context());
+    currentPatternTag_ = tag;
+    return {};
+  }
   if (type != "Plain")
-    a.fail("pattern type '" + type + "' is not supported (expected 'Plain')");
+    a.fail("pattern type '" + type + "' is not supported (expected 'Plain', 'UniformExcitation' or 'MultipleSupport')");
   const int tag = a.nextInt("patternTag");
   a.setContext("pattern Plain " + std::to_string(tag));
   const int seriesTag = a.nextInt("tsTag");
@@ -362,6 +373,84 @@ Result Interpreter::pattern(CommandArgs& a) {
   auto series = domain_->timeSeries.shared(seriesTag, a.context());
   domain_->addPattern(std::make_unique<LoadPattern>(tag, series, factor), a.context());
   currentPatternTag_ = tag;
+  return {};
+}
+
+// pattern('UniformExcitation', tag, dir, '-accel'|'-vel'|'-disp', tsTag, ..., <'-vel0', v0>, <'-fact', f>)
+Result Interpreter::uniformExcitation(CommandArgs& a) {
+  const int tag = a.nextInt("patternTag");
+  a.setContext("pattern UniformExcitation " + std::to_string(tag));
+  const int dir = a.nextInt("dir");
+  const int ndf = domain_->ndf() > 0 ? domain_->ndf() : 6;
+  if (dir < 1 || dir > ndf) a.fail("dir must be 1.." + std::to_string(ndf) + ", got " + std::to_string(dir));
+  std::shared_ptr<TimeSeries> accel, vel, disp;
+  double fact = 1.0, vel0 = 0.0;
+  while (!a.done()) {
+    if (a.nextFlag("-accel") || a.nextFlag("-acceleration")) accel = domain_->timeSeries.shared(a.nextInt("accelSeriesTag"), a.context());
+    else if (a.nextFlag("-vel") || a.nextFlag("-velocity")) vel = domain_->timeSeries.shared(a.nextInt("velSeriesTag"), a.context());
+    else if (a.nextFlag("-disp") || a.nextFlag("-displacement")) disp = domain_->timeSeries.shared(a.nextInt("dispSeriesTag"), a.context());
+    else if (a.nextFlag("-vel0")) vel0 = a.nextDouble("vel0");
+    else if (a.nextFlag("-fact") || a.nextFlag("-factor")) fact = a.nextDouble("fact");
+    else a.failAt(a.position(), "option", "one of '-accel', '-vel', '-disp', '-vel0', '-fact'");
+  }
+  if (!accel && !vel && !disp) a.fail("no ground motion: give '-accel', '-vel' or '-disp' with a timeSeries tag");
+  auto p = std::make_unique<UniformExcitation>(tag, dir - 1, accel, vel, disp, fact, vel0);
+  const UniformExcitation& pattern = *p;
+  domain_->addPattern(std::move(p), a.context());
+  pattern.applyInitialVelocity(*domain_);
+  currentPatternTag_ = tag;
+  return {};
+}
+
+// groundMotion(gmTag, 'Plain', '-accel'|'-vel'|'-disp', tsTag, ..., <'-int', 'Trapezoidal'>, <'-fact', f>)
+Result Interpreter::groundMotion(CommandArgs& a) {
+  const int tag = a.nextInt("gmTag");
+  const std::string type = a.nextString("type");
+  a.setContext("groundMotion " + std::to_string(tag));
+  if (type != "Plain") a.fail("ground motion type '" + type + "' is not supported (expected 'Plain')");
+  LoadPattern* current = domain_->findPattern(currentPatternTag_);
+  auto* pattern = dynamic_cast<MultipleSupportPattern*>(current);
+  if (!pattern) a.fail("no MultipleSupport pattern: call pattern('MultipleSupport', tag) first");
+  std::shared_ptr<TimeSeries> accel, vel, disp;
+  double fact = 1.0;
+  while (!a.done()) {
+    if (a.nextFlag("-accel") || a.nextFlag("-acceleration")) accel = domain_->timeSeries.shared(a.nextInt("accelSeriesTag"), a.context());
+    else if (a.nextFlag("-vel") || a.nextFlag("-velocity")) vel = domain_->timeSeries.shared(a.nextInt("velSeriesTag"), a.context());
+    else if (a.nextFlag("-disp") || a.nextFlag("-displacement")) disp = domain_->timeSeries.shared(a.nextInt("dispSeriesTag"), a.context());
+    else if (a.nextFlag("-fact") || a.nextFlag("-factor")) fact = a.nextDouble("fact");
+    else if (a.nextFlag("-int")) {
+      const std::string rule = a.nextString("integrator");
+      if (rule != "Trapezoidal")
+        a.fail("integrator '" + rule + "' is not supported (expected 'Trapezoidal', OpenSees' default)");
+    } else {
+      a.failAt(a.position(), "option", "one of '-accel', '-vel', '-disp', '-int', '-fact'");
+    }
+  }
+  if (!accel && !vel && !disp) a.fail("no series: give '-accel', '-vel' or '-disp' with a timeSeries tag");
+  pattern->addGroundMotion(std::make_unique<GroundMotion>(tag, accel, vel, disp, fact, a.context()), a.context());
+  return {};
+}
+
+// imposedMotion(nodeTag, dof, gmTag)
+Result Interpreter::imposedMotion(CommandArgs& a) {
+  const int nodeTag = a.nextInt("nodeTag");
+  a.setContext("imposedMotion " + std::to_string(nodeTag));
+  const int dof = a.nextInt("dof");
+  const int gmTag = a.nextInt("gmTag");
+  if (!a.done()) a.failAt(a.position(), "argument", "nothing after gmTag");
+  const Node& n = domain_->node(nodeTag, a.context());
+  if (dof < 1 || dof > n.ndf())
+    a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(n.ndf()));
+  auto* pattern = dynamic_cast<MultipleSupportPattern*>(domain_->findPattern(currentPatternTag_));
+  if (!pattern) a.fail("no MultipleSupport pattern: call pattern('MultipleSupport', tag) first");
+  for (const auto& s : domain_->sps())
+    if (s.nodeTag == nodeTag && s.dof == dof - 1) a.fail("dof " + std::to_string(dof) + " is already fixed");
+  for (const auto& [ptag, p] : domain_->patterns())
+    for (const auto& s : p->sps())
+      if (s.nodeTag == nodeTag && s.dof == dof - 1)
+        a.fail("dof " + std::to_string(dof) + " already has an imposed value in pattern " + std::to_string(ptag));
+  pattern->addImposedMotion(nodeTag, dof - 1, gmTag, a.context());
+  domain_->touch();
   return {};
 }
 

@@ -235,8 +235,7 @@ std::vector<Domain::ImposedValue> Domain::imposedValues(double time) const {
   std::vector<ImposedValue> out;
   for (const auto& sp : sps_) out.push_back({sp.nodeTag, sp.dof, sp.value});
   for (const auto& [tag, p] : patterns_) {
-    const double f = p->factor(time);
-    for (const auto& sp : p->sps()) out.push_back({sp.nodeTag, sp.dof, f * sp.value});
+    for (const auto& sp : p->sps()) out.push_back({sp.nodeTag, sp.dof, p->imposedValue(sp, time)});
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/Constraints.h"
@@ -16,6 +17,9 @@ class Domain;
 class LoadPattern {
  public:
   LoadPattern(int tag, std::shared_ptr<TimeSeries> series, double scale = 1.0);
+  virtual ~LoadPattern() = default;
+  // OpenSees' pattern type: Plain, UniformExcitation, MultipleSupport.
+  virtual std::string typeName() const { return "Plain"; }
 
   int tag() const { return tag_; }
   const TimeSeries& series() const { return *series_; }
@@ -40,11 +44,13 @@ class LoadPattern {
 
   double factor(double time) const;
   double factorSlope(double time) const;
-  void setLoadConst(double time);
+  virtual void setLoadConst(double time);
   bool isConstant() const { return constant_; }
 
   // Adds factor(time) * loads to nodes and elements of the domain.
-  void applyLoad(Domain& domain, double time) const;
+  virtual void applyLoad(Domain& domain, double time) const;
+  // The value an imposed displacement of this pattern has at time t.
+  virtual double imposedValue(const SPConstraint& sp, double time) const { return factor(time) * sp.value; }
   // Adds slope(time) * nodal loads to `out` via the callback (reference load).
   void removeReferencesTo(int nodeTag, int elementTag);
 

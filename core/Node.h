@@ -36,6 +36,8 @@ class Node {
   void incrTrialDisp(int dof, double du) { trialDisp_[dof] += du; }
   void setTrialVel(const Vector& v) { trialVel_ = v; }
   void setTrialAccel(const Vector& a) { trialAccel_ = a; }
+  // An initial condition: trial and committed velocity of one dof.
+  void setVelocity(int dof, double v) { trialVel_[dof] = committedVel_[dof] = v; }
 
   void commitState();
   void revertToLastCommit();

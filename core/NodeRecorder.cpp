@@ -115,8 +115,10 @@ NodeRecorder::Spec NodeRecorder::Spec::parse(CommandArgs& args, const Domain& do
     for (int d = 0; d < maxNdf; ++d) s.dofs.push_back(d);
 
   if (!s.accelSeries.empty()) {
-    if (s.quantity != Quantity::Accel)
-      args.fail("'-timeSeries' (absolute response under ground motion) is supported for 'accel' only");
+    // OpenSees adds the series value to disp, vel and accel alike (the
+    // user passes the ground's displacement, velocity or acceleration series).
+    if (s.quantity != Quantity::Accel && s.quantity != Quantity::Vel && s.quantity != Quantity::Disp)
+      args.fail("'-timeSeries' (absolute response under ground motion) is supported for 'disp', 'vel' and 'accel'");
     if (s.accelSeries.size() != s.dofs.size())
       args.fail("'-timeSeries' needs one series tag per recorded dof (" + std::to_string(s.dofs.size()) +
                 "), got " + std::to_string(s.accelSeries.size()));

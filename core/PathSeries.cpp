@@ -13,8 +13,9 @@
 namespace beamsolid {
 
 PathSeries::PathSeries(int tag, std::vector<double> times, std::vector<double> values, double cFactor,
-                       bool useLast, const std::string& context)
-    : TimeSeries(tag), times_(std::move(times)), values_(std::move(values)), cFactor_(cFactor), useLast_(useLast) {
+                       bool useLast, const std::string& context, bool uniform)
+    : TimeSeries(tag), times_(std::move(times)), values_(std::move(values)), cFactor_(cFactor), useLast_(useLast),
+      uniform_(uniform) {
   if (values_.empty()) throw OpenSeesError(context + ": the path has no values");
   if (times_.size() != values_.size())
     throw OpenSeesError(context + ": " + std::to_string(times_.size()) + " times but " +
@@ -30,27 +31,36 @@ PathSeries::PathSeries(int tag, std::vector<double> times, std::vector<double> v
   tolerance_ = span > 0.0 ? 1e-10 * span : 1e-12 * std::max(1.0, std::fabs(times_.front()));
 }
 
-std::size_t PathSeries::segment(double time) const {
+long PathSeries::segment(double time) const {
+  const long n = static_cast<long>(times_.size());
+  if (uniform_) {
+    if (time < times_.front()) return -1;
+    if (n < 2) return -2;
+    const double dt = times_[1] - times_[0];
+    const long i = static_cast<long>(std::floor((time - times_.front()) / dt));
+    return i >= n - 1 ? -2 : i;
+  }
+  if (time < times_.front() - tolerance_) return -1;
+  if (time > times_.back() + tolerance_) return -2;
+  if (n < 2) return 0;
   // First point strictly after t, minus one: right-continuous at interior points.
-  auto it = std::upper_bound(times_.begin(), times_.end(), time);
-  std::size_t i = it == times_.begin() ? 0 : static_cast<std::size_t>(it - times_.begin()) - 1;
-  return std::min(i, times_.size() - 2);
+  const long i = static_cast<long>(std::upper_bound(times_.begin(), times_.end(), time) - times_.begin()) - 1;
+  return std::clamp(i, 0L, n - 2);
 }
 
 double PathSeries::factor(double time) const {
-  if (time < times_.front() - tolerance_) return 0.0;
-  if (time > times_.back() + tolerance_) return useLast_ ? cFactor_ * values_.back() : 0.0;
+  const long i = segment(time);
+  if (i == -1) return 0.0;
+  if (i == -2) return uniform_ && useLast_ ? cFactor_ * values_.back() : 0.0;
   if (times_.size() == 1) return cFactor_ * values_.front();
-  const double t = std::clamp(time, times_.front(), times_.back());
-  const std::size_t i = segment(t);
+  const double t = uniform_ ? time : std::clamp(time, times_.front(), times_.back());
   const double xi = (t - times_[i]) / (times_[i + 1] - times_[i]);
   return cFactor_ * (values_[i] + xi * (values_[i + 1] - values_[i]));
 }
 
 double PathSeries::slope(double time) const {
-  if (times_.size() == 1) return 0.0;
-  if (time < times_.front() - tolerance_ || time > times_.back() + tolerance_) return 0.0;
-  const std::size_t i = segment(std::clamp(time, times_.front(), times_.back()));
+  const long i = segment(time);
+  if (i < 0 || times_.size() == 1) return 0.0;
   return cFactor_ * (values_[i + 1] - values_[i]) / (times_[i + 1] - times_[i]);
 }
 
@@ -153,7 +163,8 @@ std::unique_ptr<TimeSeries> buildPathSeries(CommandArgs& args, Domain&) {
     times.resize(values.size());
     for (std::size_t i = 0; i < values.size(); ++i) times[i] = startTime + static_cast<double>(i) * dt;
   }
-  return std::make_unique<PathSeries>(tag, std::move(times), std::move(values), cFactor, useLast, context);
+  return std::make_unique<PathSeries>(tag, std::move(times), std::move(values), cFactor, useLast, context,
+                                      !explicitTimes);
 }
 
 void registerPathSeries(Registry& r) { r.timeSeries.add("Path", &buildPathSeries); }

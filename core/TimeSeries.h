@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -15,6 +16,9 @@ class TimeSeries {
   virtual std::string className() const = 0;
   virtual double factor(double time) const = 0;
   virtual double slope(double time) const = 0;
+  // The time after which the series stays 0 (or constant), if it has one;
+  // a ground motion integrates its accelerations up to it.
+  virtual std::optional<double> lastTime() const { return std::nullopt; }
   virtual void print(std::ostream& os) const { os << "TimeSeries " << tag_ << " type " << className() << '\n'; }
 
  private:

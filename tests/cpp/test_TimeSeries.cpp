@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -100,8 +101,10 @@ TEST(PathSeries, UniformSpacingInterpolatesLinearly) {
   EXPECT_NEAR(ts->factor(0.75), 2.0, kTol);
   EXPECT_NEAR(ts->factor(1.0), 3.0, kTol);
   EXPECT_NEAR(ts->factor(1.25), 2.5, kTol);
-  EXPECT_NEAR(ts->factor(1.5), 2.0, kTol);
-  // Past the end without -useLast: 0; before the start: 0.
+  EXPECT_NEAR(ts->factor(1.4999), 2.0002, kTol);
+  // A uniform path ends before its last point (OpenSees): at and past it 0
+  // without -useLast; before the start: 0.
+  EXPECT_DOUBLE_EQ(ts->factor(1.5), 0.0);
   EXPECT_DOUBLE_EQ(ts->factor(1.6), 0.0);
   EXPECT_DOUBLE_EQ(ts->factor(-0.1), 0.0);
 }
@@ -111,9 +114,9 @@ TEST(PathSeries, SlopeIsPiecewiseConstant) {
   EXPECT_NEAR(ts->slope(0.25), 2.0, kTol);
   EXPECT_NEAR(ts->slope(0.75), 4.0, kTol);
   EXPECT_NEAR(ts->slope(1.25), -2.0, kTol);
-  // At an interior knot the segment to the right; at the last knot the last segment.
+  // At an interior knot the segment to the right; the last knot ends the path.
   EXPECT_NEAR(ts->slope(0.5), 4.0, kTol);
-  EXPECT_NEAR(ts->slope(1.5), -2.0, kTol);
+  EXPECT_DOUBLE_EQ(ts->slope(1.5), 0.0);
   EXPECT_DOUBLE_EQ(ts->slope(2.0), 0.0);
   EXPECT_DOUBLE_EQ(ts->slope(-1.0), 0.0);
   // The slope agrees with a central difference of factor() inside segments.
@@ -125,6 +128,7 @@ TEST(PathSeries, SlopeIsPiecewiseConstant) {
 
 TEST(PathSeries, UseLastHoldsTheLastValue) {
   auto ts = build("Path", {3LL, s("-dt"), 0.5, s("-values"), 0.0, 1.0, 3.0, 2.0, s("-useLast")});
+  EXPECT_NEAR(ts->factor(1.5), 2.0, kTol);
   EXPECT_NEAR(ts->factor(1.6), 2.0, kTol);
   EXPECT_NEAR(ts->factor(100.0), 2.0, kTol);
   EXPECT_DOUBLE_EQ(ts->slope(100.0), 0.0);
@@ -143,7 +147,7 @@ TEST(PathSeries, PrependZeroShiftsValuesByOneStep) {
   EXPECT_NEAR(ts->factor(0.0), 0.0, kTol);
   EXPECT_NEAR(ts->factor(0.25), 0.5, kTol);
   EXPECT_NEAR(ts->factor(0.75), 2.0, kTol);
-  EXPECT_NEAR(ts->factor(1.0), 3.0, kTol);
+  EXPECT_DOUBLE_EQ(ts->factor(1.0), 0.0);
   EXPECT_NEAR(ts->slope(0.25), 2.0, kTol);
 }
 
@@ -153,19 +157,21 @@ TEST(PathSeries, StartTimeShiftsThePath) {
   EXPECT_DOUBLE_EQ(ts->factor(1.9), 0.0);
   EXPECT_NEAR(ts->factor(2.0), 1.0, kTol);
   EXPECT_NEAR(ts->factor(2.5), 2.0, kTol);
-  EXPECT_NEAR(ts->factor(3.0), 3.0, kTol);
+  EXPECT_DOUBLE_EQ(ts->factor(3.0), 0.0);
   EXPECT_DOUBLE_EQ(ts->factor(3.1), 0.0);
 }
 
-TEST(PathSeries, LastPointReachedDespiteRoundingOfTime) {
-  // Ten steps of 0.1 accumulate to 0.9999999999999999, 11 points end at 10*0.1 = 1.0.
+TEST(PathSeries, UniformEndFollowsTheSegmentIndexOfTime) {
+  // Ten steps of 0.1 accumulate to 0.9999999999999999, inside the last
+  // segment (value ~10); the last point 1.0 itself ends the path (OpenSees).
   std::vector<V> args{6LL, s("-dt"), 0.1, s("-values")};
   for (int i = 0; i <= 10; ++i) args.push_back(static_cast<double>(i));
   auto ts = build("Path", args);
   double t = 0.0;
   for (int i = 0; i < 10; ++i) t += 0.1;
   EXPECT_NEAR(ts->factor(t), 10.0, 1e-9);
-  EXPECT_NEAR(ts->factor(1.0 + 1e-14), 10.0, 1e-9);
+  EXPECT_DOUBLE_EQ(ts->factor(1.0), 0.0);
+  EXPECT_DOUBLE_EQ(ts->factor(1.0 + 1e-14), 0.0);
 }
 
 TEST(PathSeries, ExplicitTimes) {
@@ -176,7 +182,11 @@ TEST(PathSeries, ExplicitTimes) {
   EXPECT_NEAR(ts->factor(2.5), -1.0, kTol);
   EXPECT_NEAR(ts->slope(2.0), -2.0, kTol);
   EXPECT_NEAR(ts->slope(0.5), 2.0, kTol);
+  // Explicit times include the last point; after it 0, even with -useLast (OpenSees).
+  EXPECT_NEAR(ts->factor(3.0), -2.0, kTol);
   EXPECT_DOUBLE_EQ(ts->factor(3.5), 0.0);
+  auto held = build("Path", {7LL, s("-time"), 0.0, 1.0, 3.0, s("-values"), 0.0, 2.0, -2.0, s("-useLast")});
+  EXPECT_DOUBLE_EQ(held->factor(3.5), 0.0);
 }
 
 TEST(PathSeries, ValuesAndTimesFromFiles) {
@@ -219,4 +229,68 @@ TEST(PathSeries, ClearErrors) {
   EXPECT_TRUE(contains(m, "not both")) << m;
   m = buildError("Path", {1LL, s("-time"), 0.0, 1.0, s("-values"), 1.0, 2.0, s("-prependZero")});
   EXPECT_TRUE(contains(m, "'-prependZero' needs '-dt'")) << m;
+}
+
+// Periodic series against their closed forms, with the ends included.
+TEST(TrigSeries, SineBetweenStartAndEndWithShiftAndZeroShift) {
+  const double pi = 3.14159265358979323846;
+  auto ts = build("Trig", {11LL, 1.0, 3.0, 2.0, s("-factor"), 2.0, s("-shift"), 0.3});
+  EXPECT_EQ(ts->className(), "Trig");
+  for (double t : {1.0, 1.3, 2.0, 2.9, 3.0}) {
+    EXPECT_NEAR(ts->factor(t), 2.0 * std::sin(pi * (t - 1.0) + 0.3), kTol) << t;
+    EXPECT_NEAR(ts->slope(t), 2.0 * pi * std::cos(pi * (t - 1.0) + 0.3), 1e-11) << t;
+  }
+  EXPECT_DOUBLE_EQ(ts->factor(0.999), 0.0);
+  EXPECT_DOUBLE_EQ(ts->factor(3.001), 0.0);
+  // The zero shift adds z and moves the phase by period*asin(z/f)/(2 pi).
+  auto z = build("Sine", {12LL, 0.0, 10.0, 4.0, s("-zeroShift"), 0.5});
+  const double phi = -4.0 * std::asin(0.5) / (2 * pi);
+  for (double t : {0.0, 0.7, 3.1})
+    EXPECT_NEAR(z->factor(t), std::sin(pi / 2 * t + phi) + 0.5, kTol) << t;
+  EXPECT_NE(buildError("Trig", {13LL, 0.0, 1.0, 0.0}).find("period must be positive"), std::string::npos);
+  EXPECT_NE(buildError("Trig", {13LL, 0.0, 1.0, 1.0, s("-zeroShift"), 2.0}).find("zeroShift"), std::string::npos);
+}
+
+TEST(RectangularSeries, ConstantInsideClosedInterval) {
+  auto ts = build("Rectangular", {14LL, 1.0, 3.0, s("-factor"), -2.5});
+  EXPECT_DOUBLE_EQ(ts->factor(1.0), -2.5);
+  EXPECT_DOUBLE_EQ(ts->factor(2.0), -2.5);
+  EXPECT_DOUBLE_EQ(ts->factor(3.0), -2.5);
+  EXPECT_DOUBLE_EQ(ts->factor(0.99), 0.0);
+  EXPECT_DOUBLE_EQ(ts->factor(3.01), 0.0);
+  EXPECT_DOUBLE_EQ(ts->slope(2.0), 0.0);
+}
+
+TEST(PulseSeries, OnForTheWidthOfEachPeriod) {
+  auto ts = build("Pulse", {15LL, 1.0, 4.0, 1.0});
+  EXPECT_DOUBLE_EQ(ts->factor(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(ts->factor(1.49), 1.0);
+  EXPECT_DOUBLE_EQ(ts->factor(1.5), 0.0);  // the pulse ends at width * period
+  EXPECT_DOUBLE_EQ(ts->factor(2.0), 1.0);
+  EXPECT_DOUBLE_EQ(ts->factor(4.0), 1.0);
+  EXPECT_DOUBLE_EQ(ts->factor(4.2), 0.0);
+  auto w = build("Pulse", {16LL, 1.0, 5.0, 1.5, s("-width"), 0.3, s("-shift"), 0.2, s("-factor"), 2.0,
+                           s("-zeroShift"), 0.1});
+  // On while frac((t - 1 + 0.2) / 1.5) < 0.3, i.e. t in [1, 1.25) and [2.3, 2.75), ...
+  EXPECT_NEAR(w->factor(1.2), 2.1, kTol);
+  EXPECT_NEAR(w->factor(1.3), 0.1, kTol);
+  EXPECT_NEAR(w->factor(2.4), 2.1, kTol);
+  EXPECT_NEAR(w->factor(2.8), 0.1, kTol);
+  EXPECT_DOUBLE_EQ(w->factor(5.5), 0.0);
+  EXPECT_NE(buildError("Pulse", {17LL, 0.0, 1.0, 1.0, s("-width"), 1.5}).find("width"), std::string::npos);
+}
+
+TEST(TriangleSeries, UnitTriangleWaveAndZeroShift) {
+  auto ts = build("Triangle", {18LL, 1.0, 4.0, 2.0});
+  const double t[] = {1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0};
+  const double v[] = {0.0, 0.5, 1.0, 0.0, -1.0, 0.0, 1.0, 0.0};
+  for (int i = 0; i < 8; ++i) EXPECT_NEAR(ts->factor(t[i]), v[i], kTol) << t[i];
+  EXPECT_NEAR(ts->slope(1.2), 2.0, kTol);
+  EXPECT_NEAR(ts->slope(2.2), -2.0, kTol);
+  EXPECT_DOUBLE_EQ(ts->factor(4.5), 0.0);
+  // With a zero shift z the wave still starts from 0: factor = f*tri(p - z/(4f)) + z.
+  auto z = build("Triangle", {19LL, 1.0, 4.0, 2.0, s("-zeroShift"), 0.1});
+  EXPECT_NEAR(z->factor(1.0), 0.0, kTol);
+  EXPECT_NEAR(z->factor(1.5), 1.0, kTol);
+  EXPECT_NEAR(z->factor(2.5), -0.8, kTol);
 }

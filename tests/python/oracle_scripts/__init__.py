@@ -32,4 +32,6 @@ SCRIPTS = (
     "steel_frame_wf",
     "aggregator_2d",
     "public_examples_static",
+    "time_series",
+    "ground_motion",
 )
