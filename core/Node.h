@@ -36,6 +36,12 @@ class Node {
   void incrTrialDisp(int dof, double du) { trialDisp_[dof] += du; }
   void setTrialVel(const Vector& v) { trialVel_ = v; }
   void setTrialAccel(const Vector& a) { trialAccel_ = a; }
+  // One dof's trial response (transient integrators).
+  void setTrialResponse(int dof, double u, double v, double a) {
+    trialDisp_[dof] = u;
+    trialVel_[dof] = v;
+    trialAccel_[dof] = a;
+  }
 
   void commitState();
   void revertToLastCommit();
