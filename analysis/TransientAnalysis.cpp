@@ -31,8 +31,11 @@ int TransientAnalysis::analyze(int numSteps, double dt) {
 int TransientAnalysis::analyze(int numSteps, double dt, double dtMin, double dtMax, int desiredIterations) {
   return guarded([&] {
     TransientIntegrator& t = integrator();
-    double current = dt;
-    for (int done = 0; done < numSteps;) {
+    // As OpenSees: steps until the elapsed time reaches numSteps * dt
+    // (not numSteps steps), the first one of dt.
+    const double total = numSteps * dt;
+    double current = dt, elapsed = 0.0;
+    while (elapsed < total) {
       if (const int code = setupStep()) return code;
       t.setDeltaT(model_, current);
       if (const int code = oneStep()) {
@@ -40,7 +43,7 @@ int TransientAnalysis::analyze(int numSteps, double dt, double dtMin, double dtM
         if (current < dtMin) return code;
         continue;
       }
-      ++done;
+      elapsed += current;
       const int iterations = std::max(1, components_.test->numIterations());
       current = std::clamp(current * double(desiredIterations) / double(iterations), dtMin, dtMax);
     }

@@ -337,7 +337,8 @@ void Domain::setLoadConst() {
 
 void Domain::calculateReactions(ReactionKind kind) {
   // As OpenSees: Dynamic adds inertia and damping forces to the static
-  // reaction; Rayleigh gives the Rayleigh damping forces alone.
+  // reaction; Rayleigh gives the Rayleigh damping forces alone; the nodal
+  // mass-proportional damping alphaM m v enters all three (as OpenSees').
   const bool forces = kind != ReactionKind::Rayleigh, inertia = kind == ReactionKind::Dynamic,
              damping = kind != ReactionKind::Static;
   for (auto& [tag, n] : nodes_) {
@@ -345,7 +346,7 @@ void Domain::calculateReactions(ReactionKind kind) {
     if (forces) n->addReaction(-n->unbalancedLoad());
     const Vector& m = n->mass();
     if (inertia) n->addReaction(m.cwiseProduct(n->trialAccel()));
-    if (damping && rayleigh_.alphaM != 0.0) n->addReaction(rayleigh_.alphaM * m.cwiseProduct(n->trialVel()));
+    if (rayleigh_.alphaM != 0.0) n->addReaction(rayleigh_.alphaM * m.cwiseProduct(n->trialVel()));
   }
   for (auto& [tag, e] : elements_) {
     Vector f = forces ? Vector(e->resistingForce()) : Vector::Zero(e->numDOF());

@@ -71,7 +71,9 @@ Matrix Element::rayleighMatrix(const RayleighFactors& f, const Matrix& current) 
   if (f.alphaM != 0.0) c += f.alphaM * Matrix(massMatrix());
   if (f.betaK != 0.0) c += f.betaK * current;
   if (f.betaKinit != 0.0) c += f.betaKinit * Matrix(initialStiff());
-  if (f.betaKcomm != 0.0 && committedStiff_.rows() == numDOF_) c += f.betaKcomm * committedStiff_;
+  // Before the first commit OpenSees damps with the initial stiffness.
+  if (f.betaKcomm != 0.0)
+    c += f.betaKcomm * (committedStiff_.rows() == numDOF_ ? committedStiff_ : Matrix(initialStiff()));
   return c;
 }
 

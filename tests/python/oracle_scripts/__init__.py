@@ -31,4 +31,5 @@ SCRIPTS = (
     "rc_frame_2d",
     "steel_frame_wf",
     "aggregator_2d",
+    "dynamics_sdof_mdof",
 )
