@@ -88,6 +88,7 @@ void AnalysisModel::formDynamicTangent(Stiffness which, double cK, double cC, do
     const Matrix current = Matrix(el.tangentStiff());
     Matrix a = cK * (which == Stiffness::Initial ? Matrix(el.initialStiff()) : current);
     if (cC != 0.0 && r.any()) a += cC * el.rayleighMatrix(r, current);
+    if (cC != 0.0 && el.hasDampingTangent()) a += cC * el.dampingTangent();
     if (cM != 0.0) a += cM * Matrix(el.massMatrix());
     scatterElementMatrix(values, e, a.data());
   }

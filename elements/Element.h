@@ -50,6 +50,10 @@ class Element {
   // Whether the global rayleigh() factors damp this element (OpenSees'
   // -doRayleigh flags of truss and zeroLength; other elements always).
   virtual bool doesRayleighDamping() const { return true; }
+  // d force / d nodal velocity of the element's own dashpots (Viscous
+  // materials, Elastic eta), added to the damping matrix; none by default.
+  virtual bool hasDampingTangent() const { return false; }
+  virtual Matrix dampingTangent() { return Matrix::Zero(numDOF_, numDOF_); }
   // Transient analysis, from the nodes' trial velocities and accelerations:
   // M a, and C v with C the Rayleigh damping of factors f (zero when the
   // element does no Rayleigh damping).

@@ -1,7 +1,7 @@
 """Transient analysis: an SDOF spring and a 2D portal frame in time.
 
 A spring-mass (truss with -doRayleigh) under a ramp, with every Newmark
--form and HHT; then a fixed-base portal frame (elasticBeamColumn, nodal
+-form and HHT; a spring with a Viscous dashpot (alpha 1, 0.5, 0.3); then a fixed-base portal frame (elasticBeamColumn, nodal
 masses on every dof) with Rayleigh damping set from its first two
 eigenvalues (eigen before the analysis), loaded by a nodal load history
 (Path series with -dt/-values) under Newmark, HHT, CentralDifference
@@ -42,6 +42,32 @@ def _spring(ops, out, integrator, tag):
             row += [ops.nodeReaction(1, 1), ops.nodeReaction(2, 1)]
         rows.append(row)
     out["spring." + tag] = rows
+
+
+def _dashpot(ops, out, alpha):
+    ops.wipe()
+    ops.model("basic", "-ndm", 1, "-ndf", 1)
+    ops.node(1, 0.0)
+    ops.node(2, 0.0)
+    ops.fix(1, 1)
+    ops.mass(2, 2.0)
+    ops.uniaxialMaterial("Elastic", 1, 100.0)
+    ops.uniaxialMaterial("Viscous", 2, 3.0, alpha)
+    ops.element("zeroLength", 1, 1, 2, "-mat", 1, 2, "-dir", 1, 1)
+    ops.timeSeries("Path", 1, "-dt", 0.05, "-values", 0.0, 10.0, 10.0, -5.0, 0.0, 0.0, 3.0)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 1.0)
+    ops.test("NormDispIncr", 1e-12, 20)
+    ops.algorithm("Newton")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.system("FullGeneral")
+    ops.analysis("Transient")
+    rows = []
+    for _ in range(10):
+        code = ops.analyze(1, 0.05)
+        rows.append([code, ops.nodeDisp(2, 1), ops.nodeVel(2, 1), ops.nodeAccel(2, 1), ops.testIter(),
+                     ops.eleResponse(1, "material", 2, "stress")])
+    out["dashpot.%g" % alpha] = rows
 
 
 def _frame(ops, out, integrator, tag, algorithm="Newton", variable=False):
@@ -100,6 +126,8 @@ def run(ops):
         (("CentralDifference",), "central"),
     ]:
         _spring(ops, out, integrator, tag) if tag != "central" else None
+    for alpha in (1.0, 0.5, 0.3):
+        _dashpot(ops, out, alpha)
     _frame(ops, out, ("Newmark", 0.5, 0.25), "newmark")
     _frame(ops, out, ("HHT", 0.7, 0.8, 0.4225), "hht")
     _frame(ops, out, ("CentralDifference",), "central", algorithm="Linear")
