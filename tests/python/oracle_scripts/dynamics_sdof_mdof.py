@@ -7,7 +7,7 @@ eigenvalues (eigen before the analysis), loaded by a nodal load history
 (Path series with -dt/-values) under Newmark, HHT, CentralDifference
 (Linear algorithm) and VariableTransient. Node displacements, velocities,
 accelerations, static/-dynamic/-rayleigh reactions, times and iteration
-counts are returned at every step.
+counts are returned at every step, and Node recorder files of disp, vel, accel.
 """
 import math
 
@@ -101,6 +101,11 @@ def _frame(ops, out, integrator, tag, algorithm="Newton", variable=False):
     ops.algorithm(algorithm)
     ops.integrator(*integrator)
     ops.analysis("VariableTransient" if variable else "Transient")
+    files = []
+    if tag == "newmark":
+        for what in ("disp", "vel", "accel"):
+            files.append("frame_%s.out" % what)
+            ops.recorder("Node", "-file", files[-1], "-time", "-node", 5, 6, "-dof", 1, 2, 3, what)
     rows = []
     for _ in range(12):
         code = ops.analyze(1, 0.01, 0.0025, 0.04, 4) if variable else ops.analyze(1, 0.01)
@@ -111,6 +116,11 @@ def _frame(ops, out, integrator, tag, algorithm="Newton", variable=False):
         row += ops.nodeReaction(1) + ops.nodeReaction(2)
         rows.append(row)
     out["frame." + tag] = rows
+    if files:
+        ops.remove("recorders")
+        for name in files:
+            with open(name) as f:
+                out["file:" + name] = f.read()
     if variable:
         out["frame." + tag + ".multi"] = [ops.analyze(5, 0.01, 0.0025, 0.04, 4), ops.getTime()]
     ops.wipe()
