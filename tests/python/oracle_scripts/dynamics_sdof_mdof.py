@@ -1,10 +1,10 @@
 """Transient analysis: an SDOF spring and a 2D portal frame in time.
 
 A spring-mass (truss with -doRayleigh) under a ramp, with every Newmark
--form and HHT; a spring with a Viscous dashpot (alpha 1, 0.5, 0.3); then a fixed-base portal frame (elasticBeamColumn, nodal
+-form, HHT and TRBDF2; a spring with a Viscous dashpot (alpha 1, 0.5, 0.3); then a fixed-base portal frame (elasticBeamColumn, nodal
 masses on every dof) with Rayleigh damping set from its first two
 eigenvalues (eigen before the analysis), loaded by a nodal load history
-(Path series with -dt/-values) under Newmark, HHT, CentralDifference
+(Path series with -dt/-values) under Newmark, HHT, TRBDF2, CentralDifference
 (Linear algorithm) and VariableTransient. Node displacements, velocities,
 accelerations, static/-dynamic/-rayleigh reactions, times and iteration
 counts are returned at every step, and Node recorder files of disp, vel, accel.
@@ -133,6 +133,7 @@ def run(ops):
         (("Newmark", 0.5, 0.25, "-form", "V"), "newmarkV"),
         (("Newmark", 0.6, 0.3025, "-form", "A"), "newmarkA"),
         (("HHT", 0.8), "hht"),
+        (("TRBDF2",), "trbdf2"),
         (("CentralDifference",), "central"),
     ]:
         _spring(ops, out, integrator, tag) if tag != "central" else None
@@ -141,6 +142,7 @@ def run(ops):
     _frame(ops, out, ("Newmark", 0.5, 0.25), "newmark")
     _frame(ops, out, ("HHT", 0.7, 0.8, 0.4225), "hht")
     _frame(ops, out, ("CentralDifference",), "central", algorithm="Linear")
+    _frame(ops, out, ("TRBDF2",), "trbdf2")
     _frame(ops, out, ("Newmark", 0.5, 0.25), "variable", variable=True)
     ops.wipe()
     return out
