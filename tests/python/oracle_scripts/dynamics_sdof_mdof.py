@@ -2,7 +2,7 @@
 
 A spring-mass (truss with -doRayleigh) under a ramp, with every Newmark
 -form, HHT and TRBDF2; a spring with a Viscous dashpot (alpha 1, 0.5, 0.3); then a fixed-base portal frame (elasticBeamColumn, nodal
-masses on every dof) with Rayleigh damping set from its first two
+masses on every dof, top floor tied by equalDOF) with Rayleigh damping set from its first two
 eigenvalues (eigen before the analysis), loaded by a nodal load history
 (Path series with -dt/-values) under Newmark, HHT, TRBDF2, CentralDifference
 (Linear algorithm) and VariableTransient. Node displacements, velocities,
@@ -80,6 +80,7 @@ def _frame(ops, out, integrator, tag, algorithm="Newton", variable=False):
     ops.fix(2, 1, 1, 1)
     for t in (3, 4, 5, 6):
         ops.mass(t, 2.0, 2.0, 0.05)
+    ops.equalDOF(5, 6, 1)  # a rigid top floor: constrained dofs move with their masters
     ops.geomTransf("Linear", 1)
     E, A, I = 2.0e4, 0.04, 2.0e-4
     for e, (i, j) in enumerate([(1, 3), (2, 4), (3, 5), (4, 6), (3, 4), (5, 6)], start=1):
