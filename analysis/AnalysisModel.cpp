@@ -62,14 +62,68 @@ void AnalysisModel::formTangent(Stiffness which) {
     MatrixView k = which == Stiffness::Initial ? elements[e]->initialStiff() : elements[e]->tangentStiff();
     scatterElementMatrix(values, e, k.data());
   }
-  // Penalty springs (only present with the Penalty handler).
-  for (const auto& sp : map_.penaltySPs()) values[sp.diagPosition] += penaltyAlphaS_;
+  addPenaltyTangent(values, 1.0);
+  factoredKind_ = int(which);
+}
+
+// Penalty springs (only present with the Penalty handler).
+void AnalysisModel::addPenaltyTangent(std::vector<double>& values, double factor) const {
+  for (const auto& sp : map_.penaltySPs()) values[sp.diagPosition] += factor * penaltyAlphaS_;
   for (const auto& mp : map_.penaltyMPs()) {
     int k = 0;
     for (const auto& b : mp.row)
-      for (const auto& a : mp.row) values[mp.positions[k++]] += penaltyAlphaM_ * a.coefficient * b.coefficient;
+      for (const auto& a : mp.row)
+        values[mp.positions[k++]] += factor * penaltyAlphaM_ * a.coefficient * b.coefficient;
   }
+}
+
+void AnalysisModel::formDynamicTangent(Stiffness which, double cK, double cC, double cM) {
+  system_.zeroA();
+  system_.invalidateFactor();
+  auto& values = system_.values();
+  const RayleighFactors& r = domain_.rayleigh();
+  const auto& elements = map_.elements();
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    Element& el = *elements[e];
+    const Matrix current = Matrix(el.tangentStiff());
+    Matrix a = cK * (which == Stiffness::Initial ? Matrix(el.initialStiff()) : current);
+    if (cC != 0.0 && r.any()) a += cC * el.rayleighMatrix(r, current);
+    if (cC != 0.0 && el.hasDampingTangent()) a += cC * el.dampingTangent();
+    if (cM != 0.0) a += cM * Matrix(el.massMatrix());
+    scatterElementMatrix(values, e, a.data());
+  }
+  const double nodal = cM + cC * r.alphaM;
+  for (int f = 0; f < map_.numFullDofs() && nodal != 0.0; ++f) {
+    const double m = map_.nodeOfFull(f)->mass()[map_.dofOfFull(f)];
+    if (m == 0.0) continue;
+    for (auto* a = map_.fullTermsBegin(f); a != map_.fullTermsEnd(f); ++a)
+      for (auto* b = map_.fullTermsBegin(f); b != map_.fullTermsEnd(f); ++b)
+        values[map_.position(a->equation, b->equation)] += nodal * m * a->coefficient * b->coefficient;
+  }
+  addPenaltyTangent(values, cK);
   factoredKind_ = int(which);
+}
+
+void AnalysisModel::subtractInertiaAndDamping() {
+  Vector& b = system_.b();
+  const RayleighFactors& r = domain_.rayleigh();
+  const auto& elements = map_.elements();
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    Vector force = elements[e]->inertiaForce();
+    if (r.any()) force += elements[e]->rayleighForce(r);
+    const int n = map_.elementMaps()[e].numDOF;
+    for (int i = 0; i < n; ++i)
+      for (auto* t = map_.elementTermsBegin(e, i); t != map_.elementTermsEnd(e, i); ++t)
+        b[t->equation] -= t->coefficient * force[i];
+  }
+  for (int f = 0; f < map_.numFullDofs(); ++f) {
+    const Node* node = map_.nodeOfFull(f);
+    const int d = map_.dofOfFull(f);
+    const double m = node->mass()[d];
+    if (m == 0.0) continue;
+    const double p = m * (node->trialAccel()[d] + r.alphaM * node->trialVel()[d]);
+    for (auto* t = map_.fullTermsBegin(f); t != map_.fullTermsEnd(f); ++t) b[t->equation] -= t->coefficient * p;
+  }
 }
 
 void AnalysisModel::assembleMass(std::vector<double>& values) const {

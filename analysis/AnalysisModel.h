@@ -35,6 +35,11 @@ class AnalysisModel {
 
   // A = K (current or initial) of all elements, plus penalty terms.
   void formTangent(Stiffness which);
+  // Transient analysis: A = cK K + cC C + cM M, C the Domain's Rayleigh
+  // damping (penalty terms scale with cK, as stiffness does).
+  void formDynamicTangent(Stiffness which, double cK, double cC, double cM);
+  // b -= M a + C v of the nodes' trial accelerations and velocities (after formUnbalance).
+  void subtractInertiaAndDamping();
   // Adds the element mass matrices and nodal masses into `values` (pattern layout).
   void assembleMass(std::vector<double>& values) const;
   // b = P(t) - F(u) (+ penalty terms), reduced to the equations.
@@ -57,6 +62,7 @@ class AnalysisModel {
 
  private:
   void scatterElementMatrix(std::vector<double>& values, int e, const double* k) const;
+  void addPenaltyTangent(std::vector<double>& values, double factor) const;
 
   Domain& domain_;
   DofMap map_;

@@ -64,6 +64,7 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"testNorms", &Interpreter::testNorm},
       {"systemSize", &Interpreter::systemSize},
       {"reactions", &Interpreter::reactions},
+      {"rayleigh", &Interpreter::rayleigh},
       {"nodeDisp", &Interpreter::nodeDisp},
       {"nodeVel", &Interpreter::nodeVel},
       {"nodeAccel", &Interpreter::nodeAccel},

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/StaticAnalysis.h"
+#include "analysis/TransientAnalysis.h"
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "materials/uniaxial/UniaxialMaterial.h"
@@ -96,6 +97,7 @@ class Interpreter {
   Result testNorm(CommandArgs&);
   Result systemSize(CommandArgs&);
   Result reactions(CommandArgs&);
+  Result rayleigh(CommandArgs&);
 
   // --- queries (InterpreterQueries.cpp) ---
   Result nodeDisp(CommandArgs&);
@@ -173,7 +175,7 @@ class Interpreter {
   int currentSectionTag_ = -1;
   bool haveAnalysis_ = false;
   AnalysisComponents components_;
-  std::unique_ptr<StaticAnalysis> analysis_;
+  std::unique_ptr<Analysis> analysis_;
   std::string lastError_;
   std::chrono::steady_clock::time_point timerStart_;
   bool timerRunning_ = false;

@@ -75,24 +75,55 @@ Result Interpreter::analysis(CommandArgs& a) {
   const std::string type = a.nextString("type");
   a.setContext("analysis " + type);
   while (!a.done()) a.restAsStrings();
-  if (type == "Transient" || type == "VariableTransient")
-    a.fail("transient analysis is not available yet in BeamSolid (use 'Static')");
-  if (type != "Static") a.fail("analysis type '" + type + "' is unknown (expected 'Static')");
+  const bool transient = type == "Transient" || type == "VariableTransient";
+  if (!transient && type != "Static")
+    a.fail("analysis type '" + type + "' is unknown (expected 'Static', 'Transient' or 'VariableTransient')");
+  // OpenSees' default integrator is LoadControl for Static, Newmark(0.5, 0.25) for Transient.
+  if (transient && !components_.integrator)
+    components_.integrator = buildDefault<Integrator>(Registry::global().integrators, *domain_, "Newmark",
+                                                      {0.5, 0.25});
   ensureAnalysisDefaults();
-  if (!components_.integrator->isStatic()) a.fail("integrator " + components_.integrator->name() + " is not static");
-  analysis_ = std::make_unique<StaticAnalysis>(*domain_, components_);
+  if (transient == components_.integrator->isStatic())
+    a.fail("integrator " + components_.integrator->name() + " is " + (transient ? "static" : "transient") +
+           ": choose a " + (transient ? "transient one (Newmark, HHT, CentralDifference)" : "static one") +
+           " before analysis('" + type + "')");
+  if (transient)
+    analysis_ = std::make_unique<TransientAnalysis>(*domain_, components_, type == "VariableTransient");
+  else
+    analysis_ = std::make_unique<StaticAnalysis>(*domain_, components_);
   return {};
 }
 
 Result Interpreter::analyze(CommandArgs& a) {
   const int n = a.nextInt("numIncr");
-  while (!a.done()) a.restAsStrings();  // dt, dtMin, ... of transient forms, '-noFlush'
-  if (!analysis_) a.fail("no analysis: call analysis('Static') first");
+  if (!analysis_) a.fail("no analysis: call analysis('Static') or analysis('Transient') first");
   if (n < 0) a.fail("numIncr must be non-negative");
-  if (!components_.integrator->isStatic()) a.fail("integrator " + components_.integrator->name() + " is not static");
-  // analyze never throws once it runs (StaticAnalysis::analyze): a failure
-  // is a negative code, its reason kept for last_error().
-  const int code = analysis_->analyze(n);
+  int code = 0;
+  if (auto* transient = dynamic_cast<TransientAnalysis*>(analysis_.get())) {
+    if (components_.integrator->isStatic())
+      a.fail("integrator " + components_.integrator->name() + " is static; the analysis is transient");
+    const double dt = a.nextDouble("dt");
+    if (!(dt > 0.0)) a.fail("dt must be positive");
+    if (transient->variable() && !a.done() && !a.nextIsString()) {
+      const double dtMin = a.nextDouble("dtMin");
+      const double dtMax = a.nextDouble("dtMax");
+      const int jd = a.nextInt("Jd");
+      if (!(dtMin > 0.0) || dtMax < dtMin) a.fail("need 0 < dtMin <= dtMax");
+      if (jd < 1) a.fail("Jd must be at least 1");
+      while (!a.done()) a.restAsStrings();  // '-noFlush'
+      code = transient->analyze(n, dt, dtMin, dtMax, jd);
+    } else {
+      while (!a.done()) a.restAsStrings();
+      code = transient->analyze(n, dt);
+    }
+  } else {
+    while (!a.done()) a.restAsStrings();  // '-noFlush'; OpenSees ignores a dt in statics
+    if (!components_.integrator->isStatic())
+      a.fail("integrator " + components_.integrator->name() + " is not static");
+    // analyze never throws once it runs (Analysis): a failure is a negative
+    // code, its reason kept for last_error().
+    code = static_cast<StaticAnalysis&>(*analysis_).analyze(n);
+  }
   lastError_ = analysis_->lastError();
   // Recorded data reaches the disk after every analyze, success or not.
   domain_->flushRecorders();
@@ -170,11 +201,26 @@ Result Interpreter::systemSize(CommandArgs& a) {
 }
 
 Result Interpreter::reactions(CommandArgs& a) {
+  Domain::ReactionKind kind = Domain::ReactionKind::Static;
   while (!a.done()) {
     const std::string opt = a.nextString("option");
-    if (opt != "-dynamic" && opt != "-rayleigh") a.fail("unknown option '" + opt + "'");
+    if (opt == "-dynamic") kind = Domain::ReactionKind::Dynamic;
+    else if (opt == "-rayleigh") kind = Domain::ReactionKind::Rayleigh;
+    else a.fail("unknown option '" + opt + "' (expected -dynamic or -rayleigh)");
   }
-  domain_->calculateReactions();
+  domain_->calculateReactions(kind);
+  return {};
+}
+
+// rayleigh(alphaM, betaK, betaKinit, betaKcomm): global Rayleigh damping.
+Result Interpreter::rayleigh(CommandArgs& a) {
+  RayleighFactors f;
+  f.alphaM = a.nextDouble("alphaM");
+  f.betaK = a.nextDouble("betaK");
+  f.betaKinit = a.nextDouble("betaKinit");
+  f.betaKcomm = a.nextDouble("betaKcomm");
+  a.expectEnd();
+  domain_->setRayleigh(f);
   return {};
 }
 

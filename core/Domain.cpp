@@ -295,6 +295,9 @@ void Domain::update() {
 void Domain::commit() {
   for (auto& [tag, n] : nodes_) n->commitState();
   for (auto& [tag, e] : elements_) e->commitState();
+  // betaKcomm damps with the stiffness of the last converged state.
+  if (rayleigh_.betaKcomm != 0.0)
+    for (auto& [tag, e] : elements_) e->keepCommittedStiffness();
   committedTime_ = currentTime_;
   record();
 }
@@ -331,13 +334,23 @@ void Domain::setLoadConst() {
   for (auto& [tag, p] : patterns_) p->setLoadConst(currentTime_);
 }
 
-void Domain::calculateReactions() {
+void Domain::calculateReactions(ReactionKind kind) {
+  // As OpenSees: Dynamic adds inertia and damping forces to the static
+  // reaction; Rayleigh gives the Rayleigh damping forces alone; the nodal
+  // mass-proportional damping alphaM m v enters all three (as OpenSees').
+  const bool forces = kind != ReactionKind::Rayleigh, inertia = kind == ReactionKind::Dynamic,
+             damping = kind != ReactionKind::Static;
   for (auto& [tag, n] : nodes_) {
     n->zeroReaction();
-    n->addReaction(-n->unbalancedLoad());
+    if (forces) n->addReaction(-n->unbalancedLoad());
+    const Vector& m = n->mass();
+    if (inertia) n->addReaction(m.cwiseProduct(n->trialAccel()));
+    if (rayleigh_.alphaM != 0.0) n->addReaction(rayleigh_.alphaM * m.cwiseProduct(n->trialVel()));
   }
   for (auto& [tag, e] : elements_) {
-    VectorView f = e->resistingForce();
+    Vector f = forces ? Vector(e->resistingForce()) : Vector::Zero(e->numDOF());
+    if (inertia) f += e->inertiaForce();
+    if (damping) f += e->rayleighForce(rayleigh_);
     int offset = 0;
     for (Node* n : e->nodes()) {
       n->addReaction(f.segment(offset, n->ndf()));

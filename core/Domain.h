@@ -9,6 +9,7 @@
 #include "core/Constraints.h"
 #include "core/LoadPattern.h"
 #include "core/Node.h"
+#include "core/RayleighFactors.h"
 #include "core/Recorder.h"
 #include "core/TaggedStore.h"
 #include "core/TimeSeries.h"
@@ -128,6 +129,13 @@ class Domain {
   void record();
   void flushRecorders();
 
+  // --- damping ---------------------------------------------------------------
+  // rayleigh(alphaM, betaK, betaKinit, betaKcomm): C = alphaM M + betaK K
+  // (current) + betaKinit K(initial) + betaKcomm K(last committed), for every
+  // element that does Rayleigh damping and (alphaM only) every nodal mass.
+  const RayleighFactors& rayleigh() const { return rayleigh_; }
+  void setRayleigh(const RayleighFactors& f) { rayleigh_ = f; }
+
   // --- state ---------------------------------------------------------------------
   double currentTime() const { return currentTime_; }
   double committedTime() const { return committedTime_; }
@@ -150,8 +158,11 @@ class Domain {
   void initialStateAnalysis(bool on);
   // loadConst: every existing pattern keeps its current factor.
   void setLoadConst();
-  // Reactions: element resisting forces minus applied nodal loads.
-  void calculateReactions();
+  // Reactions: element resisting forces minus applied nodal loads; with
+  // Dynamic also inertia and Rayleigh damping forces, with Rayleigh the
+  // damping forces only (OpenSees' reactions('-dynamic' | '-rayleigh')).
+  enum class ReactionKind { Static, Dynamic, Rayleigh };
+  void calculateReactions(ReactionKind kind = ReactionKind::Static);
 
   // Incremented whenever nodes, elements or constraints change, so the
   // analysis knows to renumber and rebuild its sparsity pattern.
@@ -174,6 +185,7 @@ class Domain {
   std::map<int, std::unique_ptr<Recorder>> recorders_;
   int nextRecorderTag_ = 0;
   int nextMPTag_ = 0;
+  RayleighFactors rayleigh_;
   double currentTime_ = 0.0;
   double committedTime_ = 0.0;
   long modelStamp_ = 0;

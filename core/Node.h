@@ -38,6 +38,12 @@ class Node {
   void setTrialAccel(const Vector& a) { trialAccel_ = a; }
   // An initial condition: trial and committed velocity of one dof.
   void setVelocity(int dof, double v) { trialVel_[dof] = committedVel_[dof] = v; }
+  // One dof's trial response (transient integrators).
+  void setTrialResponse(int dof, double u, double v, double a) {
+    trialDisp_[dof] = u;
+    trialVel_[dof] = v;
+    trialAccel_[dof] = a;
+  }
 
   void commitState();
   void revertToLastCommit();

@@ -47,6 +47,42 @@ MatrixView Element::massMatrix() {
   return viewOf(zeroMass_);
 }
 
+namespace {
+// The element's nodes' trial velocities (or accelerations), in element dof order.
+Vector gatherNodal(const std::vector<Node*>& nodes, int size, const Vector& (Node::*what)() const) {
+  Vector out(size);
+  int offset = 0;
+  for (const Node* n : nodes) {
+    out.segment(offset, n->ndf()) = (n->*what)();
+    offset += n->ndf();
+  }
+  return out;
+}
+}  // namespace
+
+Vector Element::inertiaForce() {
+  MatrixView m = massMatrix();
+  return m * gatherNodal(nodes_, numDOF_, &Node::trialAccel);
+}
+
+Matrix Element::rayleighMatrix(const RayleighFactors& f, const Matrix& current) {
+  Matrix c = Matrix::Zero(numDOF_, numDOF_);
+  if (!doesRayleighDamping()) return c;
+  if (f.alphaM != 0.0) c += f.alphaM * Matrix(massMatrix());
+  if (f.betaK != 0.0) c += f.betaK * current;
+  if (f.betaKinit != 0.0) c += f.betaKinit * Matrix(initialStiff());
+  // Before the first commit OpenSees damps with the initial stiffness.
+  if (f.betaKcomm != 0.0)
+    c += f.betaKcomm * (committedStiff_.rows() == numDOF_ ? committedStiff_ : Matrix(initialStiff()));
+  return c;
+}
+
+Vector Element::rayleighForce(const RayleighFactors& f) {
+  if (!doesRayleighDamping() || !f.any()) return Vector::Zero(numDOF_);
+  const Matrix current = f.betaK != 0.0 ? Matrix(tangentStiff()) : Matrix();
+  return rayleighMatrix(f, current) * gatherNodal(nodes_, numDOF_, &Node::trialVel);
+}
+
 void Element::addLoad(const ElementLoad& load, double) {
   throw OpenSeesError(context() + ": does not accept element load " +
                       ElementLoad::typeName(load.type));

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/ElementLoad.h"
+#include "core/RayleighFactors.h"
 #include "core/Response.h"
 #include "core/Types.h"
 
@@ -46,6 +47,24 @@ class Element {
   virtual VectorView resistingForce() = 0;
   // Consistent or lumped mass; zero by default.
   virtual MatrixView massMatrix();
+  // Whether the global rayleigh() factors damp this element (OpenSees'
+  // -doRayleigh flags of truss and zeroLength; other elements always).
+  virtual bool doesRayleighDamping() const { return true; }
+  // d force / d nodal velocity of the element's own dashpots (Viscous
+  // materials, Elastic eta), added to the damping matrix; none by default.
+  virtual bool hasDampingTangent() const { return false; }
+  virtual Matrix dampingTangent() { return Matrix::Zero(numDOF_, numDOF_); }
+  // Transient analysis, from the nodes' trial velocities and accelerations:
+  // M a, and C v with C the Rayleigh damping of factors f (zero when the
+  // element does no Rayleigh damping).
+  Vector inertiaForce();
+  Vector rayleighForce(const RayleighFactors& f);
+  // Element matrix of Rayleigh damping with factors f (betaK on `current`,
+  // the tangent already formed, to spare a second evaluation).
+  Matrix rayleighMatrix(const RayleighFactors& f, const Matrix& current);
+  // The tangent at the last commit (betaKcomm); empty (zero) until kept.
+  void keepCommittedStiffness() { committedStiff_ = tangentStiff(); }
+  const Matrix& committedStiffness() const { return committedStiff_; }
 
   virtual void commitState() {}
   virtual void revertToLastCommit() {}
@@ -110,6 +129,7 @@ class Element {
   std::vector<Node*> nodes_;
   int numDOF_ = 0;
   Matrix zeroMass_;
+  Matrix committedStiff_;
 };
 
 }  // namespace beamsolid

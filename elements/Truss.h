@@ -62,6 +62,7 @@ class Truss : public Element {
   // or its linearization e0 . (u_j - u_i) (small displacement).
   double elongation() const { return initialLength_ * material_->strain(); }
   bool doRayleigh() const { return doRayleigh_; }
+  bool doesRayleighDamping() const override { return doRayleigh_; }
   const UniaxialMaterial& material() const { return *material_; }
 
  protected:

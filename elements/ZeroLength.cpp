@@ -123,6 +123,13 @@ MatrixView ZeroLength::initialStiff() {
   return MatrixView(stiffness_.data(), stiffness_.rows(), stiffness_.cols());
 }
 
+Matrix ZeroLength::dampingTangent() {
+  Matrix c = Matrix::Zero(numDOF(), numDOF());
+  for (const Spring& s : springs_)
+    if (const double eta = s.material->dampingTangent(); eta != 0.0) c += eta * (s.gradient * s.gradient.transpose());
+  return c;
+}
+
 VectorView ZeroLength::resistingForce() {
   force_.setZero();
   for (const Spring& s : springs_) force_ += s.material->stress() * s.gradient;

@@ -56,6 +56,9 @@ class ZeroLength : public Element {
   int numSprings() const { return static_cast<int>(springs_.size()); }
   const UniaxialMaterial& material(int k) const { return *springs_[k].material; }
   bool doRayleigh() const { return doRayleigh_; }
+  bool doesRayleighDamping() const override { return doRayleigh_; }
+  bool hasDampingTangent() const override { return true; }
+  Matrix dampingTangent() override;
   // Builds the local axes from -orient vectors; throws (naming `context`) if
   // x is zero or parallel to yp.
   // In a model of ndm < 3, yp is replaced by (-x2, x1, 0) (see above).

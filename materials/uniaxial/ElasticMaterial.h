@@ -20,7 +20,7 @@ class ElasticMaterial : public UniaxialMaterial {
   double tangent() const override;
   double initialTangent() const override { return E_; }
   double strainRate() const { return trialStrainRate_; }
-  double dampingTangent() const { return eta_; }
+  double dampingTangent() const override { return eta_; }
 
   void commitState() override;
   void revertToLastCommit() override;

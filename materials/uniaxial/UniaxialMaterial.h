@@ -24,6 +24,8 @@ class UniaxialMaterial {
   virtual double stress() const = 0;
   virtual double tangent() const = 0;
   virtual double initialTangent() const = 0;
+  // d stress / d strain rate, for the damping matrix of transient analysis.
+  virtual double dampingTangent() const { return 0.0; }
 
   virtual void commitState() = 0;
   virtual void revertToLastCommit() = 0;

@@ -34,4 +34,5 @@ SCRIPTS = (
     "public_examples_static",
     "time_series",
     "ground_motion",
+    "dynamics_sdof_mdof",
 )
