@@ -232,3 +232,40 @@ def test_do_rayleigh_flag_of_zero_length_and_nodal_mass_damping(model):
     # Mass-proportional damping acts on the nodal mass whatever the flag.
     assert np.array_equal(response(0, (0.5, 0.0, 0.0, 0.0)), response(1, (0.5, 0.0, 0.0, 0.0)))
     assert not np.array_equal(response(0, (0.5, 0.0, 0.0, 0.0)), undamped)
+
+
+@pytest.mark.parametrize("solver", [(), ("-fullGenLapack",)])
+def test_eigen_before_and_after_gravity_with_pdelta(solver):
+    """A cantilever column (one elasticBeamColumn, PDelta) with a lumped mass m at its
+    top: its lateral stiffness is 3EI/L^3 (the top rotation condensed), and a gravity load
+    P held by loadConst lowers it by P-Delta's P/L, so omega^2 goes from 3EI/(m L^3) to
+    (3EI/L^3 - P/L)/m, exactly for one element."""
+    import beamsolid
+
+    E, A, I, L, m, P = 200e6, 0.01, 8e-5, 4.0, 50.0, 300.0
+    model = beamsolid.Model()
+    model.model("basic", "-ndm", 2, "-ndf", 3)
+    model.node(1, 0.0, 0.0)
+    model.node(2, 0.0, L)
+    model.fix(1, 1, 1, 1)
+    model.mass(2, m, 1e-9 * m, 0.0)
+    model.geomTransf("PDelta", 1)
+    model.element("elasticBeamColumn", 1, 1, 2, A, E, I, 1)
+    before = model.eigen(*solver, 1)[0]
+    assert before == pytest.approx(3 * E * I / L**3 / m, rel=1e-12)
+    model.timeSeries("Linear", 1)
+    model.pattern("Plain", 1, 1)
+    model.load(2, 0.0, -P, 0.0)
+    model.system("UmfPack")
+    model.test("NormDispIncr", 1e-12, 10)
+    model.algorithm("Newton")
+    model.integrator("LoadControl", 0.1)
+    model.analysis("Static")
+    assert model.analyze(10) == 0
+    model.loadConst("-time", 0.0)
+    after = model.eigen(*solver, 1)[0]
+    # The axial shortening (P L / EA) changes L by 6e-6 relative; the chord keeps its length in
+    # the PDelta transformation, so the closed form holds to round-off.
+    assert after == pytest.approx((3 * E * I / L**3 - P / L) / m, rel=1e-10)
+    assert after < before
+    model.wipe()
