@@ -19,8 +19,10 @@ replayed alone:
 """
 import argparse
 import json
+import os
 import random
 import sys
+import tempfile
 
 WORDS = ["-ndf", "-mass", "-file", "/dev/null", "-time", "-node", "-ele", "-dof", "disp", "force",
          "-type", "-beamUniform", "-jntOffset", "-mat", "-dir", "-orient", "-val", "friction",
@@ -293,7 +295,14 @@ def main(argv=None):
     p.add_argument("--first", type=int, default=0, help="index of the first sequence")
     p.add_argument("--trace", action="store_true", help="print every call to stderr before making it")
     a = p.parse_args(argv)
-    counts = run(a.seed, a.sequences, a.calls, first=a.first, trace=sys.stderr if a.trace else None)
+    # Fuzzed recorders write files named after random words: keep them out of the caller's folder.
+    with tempfile.TemporaryDirectory(prefix="fuzz-") as scratch:
+        here = os.getcwd()
+        os.chdir(scratch)
+        try:
+            counts = run(a.seed, a.sequences, a.calls, first=a.first, trace=sys.stderr if a.trace else None)
+        finally:
+            os.chdir(here)
     print("FUZZ " + json.dumps(counts), flush=True)
     return 0
 
