@@ -290,11 +290,12 @@ def test_viscous_base_absorbs_the_wave(model, dof, impedance):
 
 
 # ------------------------------------------------------------ free-field column
-def box(ops, nx, lx, free_field, dofs=(1, 2, 3), ly=5.0, nz=10, record=None, dt=None):
+def box(ops, nx, lx, free_field, dofs=(1, 2, 3), ly=5.0, nz=10, record=None, dt=None, periodic=False):
     """A box lx x ly x H of nx x 1 x nz bricks on a rigid base (or, given an
     outcrop velocity `record`, on the elastic bedrock), y faces free; with
     `free_field`, its x faces (above a rigid base) follow a free-field column
-    of that width. Returns the node at the centre of the surface."""
+    of that width; with `periodic`, its x faces are tied to each other
+    (tie_periodic). Returns the node at the centre of the surface."""
     ops.wipe()
     ops.model("basic", "-ndm", 3, "-ndf", 3)
     ops.nDMaterial("ElasticIsotropic", 1, E, NU, RHO)
@@ -320,6 +321,9 @@ def box(ops, nx, lx, free_field, dofs=(1, 2, 3), ly=5.0, nz=10, record=None, dt=
         first = 1 if record is None else 0
         sides = [tag(i, j, k) for k in range(first, nz + 1) for j in range(2) for i in (0, nx)]
         bd.attach_free_field(ops, ff["levels"], sides, dofs=dofs)
+    if periodic:
+        bd.tie_periodic(ops, [tag(0, j, k) for k in range(1, nz + 1) for j in range(2)],
+                        [tag(nx, j, k) for k in range(1, nz + 1) for j in range(2)])
     if record is not None:
         base = [[tag(i, 0, 0), tag(i + 1, 0, 0), tag(i + 1, 1, 0), tag(i, 1, 0)] for i in range(nx)]
         if free_field:
@@ -347,6 +351,7 @@ def test_free_field_column_gives_a_box_the_free_field(model):
       exactly, so the box reproduces it to round-off (tolerance 1e-8;
       measured 3e-14), and the box loads the column by nothing.
     - Sides free: the box rocks and shears as a wall, 46 % off (> 30 %).
+    - x faces tied to each other (periodic, no free-field column): round-off.
     - Sides tied in the horizontal dofs only: the faces lack the vertical
       complementary shear; the centre of a box 12 H wide is 1.7 % off
       (tolerance 2.5 %)."""
@@ -361,6 +366,8 @@ def test_free_field_column_gives_a_box_the_free_field(model):
 
     assert off(6, 30.0, 100.0) < 1e-8
     assert off(6, 30.0, None) > 0.3
+    # Periodic x faces (tie_periodic) make the box a period of the layer too.
+    assert off(2, 10.0, None, periodic=True) < 1e-8
     assert off(12, 240.0, 100.0, dofs=(1, 2)) < 0.025
 
 
