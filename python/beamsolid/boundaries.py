@@ -80,7 +80,7 @@ def _dashpot_tensors(ops, faces, nodes, rho, vp, vs):
     for n, a in (nodes or {}).items():
         areas[n] = areas.get(n, np.zeros(3)) + np.asarray(a, dtype=float)
     if not areas:
-        raise ValueError("no faces and no nodes given")
+        raise ValueError("viscous_boundary: no faces and no nodes given")
     tensors = {}
     for n, a in areas.items():
         area = float(np.linalg.norm(a))
@@ -106,6 +106,8 @@ def viscous_boundary(ops, tags, rho, vp, vs, faces=None, nodes=None):
     Returns {'nodes', 'elements', 'materials': new tags,
     'dashpots': {boundary node: (fixed node, element)}, 'tensors': {node: C}}.
     """
+    if not (rho > 0.0 and vp >= 0.0 and vs >= 0.0 and vp + vs > 0.0):
+        raise ValueError("viscous_boundary: need rho > 0, vp >= 0, vs >= 0, not both 0")
     tensors = _dashpot_tensors(ops, faces, nodes, rho, vp, vs)
     created = {"nodes": [], "elements": [], "materials": [], "dashpots": {}, "tensors": tensors}
     materials = {}
@@ -115,16 +117,12 @@ def viscous_boundary(ops, tags, rho, vp, vs, faces=None, nodes=None):
         keep = [i for i in range(3) if values[i] > 1e-12 * values.max()]
         if not keep:
             continue
-        # Axes x = the largest principal direction, y = the next; z = x cross y.
+        # Local x along the largest principal value, y along the next; the
+        # zeroLength's z = x cross y is the third eigenvector up to its sign.
         order = sorted(keep, key=lambda i: -values[i])
         x_axis = vectors[:, order[0]]
         y_axis = vectors[:, order[1]] if len(order) > 1 else _perpendicular(x_axis)
-        local = {order[0]: 1}
-        if len(order) > 1:
-            local[order[1]] = 2
-        if len(order) > 2:
-            local[order[2]] = 3
-            # eigh gives an orthonormal basis; the third axis may be -(x cross y).
+        local = {i: k + 1 for k, i in enumerate(order)}
         mats, dirs = [], []
         for i in order:
             c = float(values[i])
@@ -179,6 +177,8 @@ def compliant_base(ops, tags, rho, vp, vs, record, dt, direction=1, kind="vel", 
         raise ValueError("compliant_base: kind is 'vel' or 'accel'")
     if direction not in (1, 2, 3):
         raise ValueError("compliant_base: direction is 1, 2 or 3")
+    if not dt > 0.0 or len(record) < 2:
+        raise ValueError("compliant_base: need dt > 0 and a record of at least two values")
     values = np.asarray(record, dtype=float) * factor
     if kind == "accel":
         velocity = np.zeros_like(values)
@@ -270,6 +270,8 @@ def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed"):
         raise ValueError("free_field_column: one material per brick (len(heights) - 1)")
     if base not in ("fixed", "free"):
         raise ValueError("free_field_column: base is 'fixed' or 'free'")
+    if not width > 0.0:
+        raise ValueError("free_field_column: width must be > 0")
     h = 0.5 * width
     corners = [(x - h, y - h), (x + h, y - h), (x + h, y + h), (x - h, y + h)]
     rings = []

@@ -171,6 +171,12 @@ def test_bad_input(model):
         bd.viscous_boundary(model, tags, 1.0, 2.0, 1.0, faces=[[1, 2, 3, 4]])
     with pytest.raises(ValueError, match="kind"):
         bd.compliant_base(model, tags, 1.0, 2.0, 1.0, [0.0], 0.1, kind="disp", nodes={1: [0, 0, 1]})
+    with pytest.raises(ValueError, match="viscous_boundary: need rho"):
+        bd.viscous_boundary(model, tags, 1.0, 0.0, 0.0, nodes={1: [0, 0, 1]})
+    with pytest.raises(ValueError, match="compliant_base: need dt"):
+        bd.compliant_base(model, tags, 1.0, 2.0, 1.0, [0.0], 0.1, nodes={1: [0, 0, 1]})
+    with pytest.raises(ValueError, match="width"):
+        bd.free_field_column(model, tags, [0.0, 1.0], [1], 0.0, 0.0, 0.0)
     with pytest.raises(ValueError, match="heights"):
         bd.free_field_column(model, tags, [1.0, 0.0], [1], 0.0, 0.0, 10.0)
     with pytest.raises(ValueError, match="no free-field node"):
