@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-__all__ = ["Tags", "wave_speeds", "face_areas", "viscous_boundary", "compliant_base", "tie_levels",
+__all__ = ["Tags", "wave_speeds", "brick_faces", "face_areas", "viscous_boundary", "compliant_base", "tie_levels",
            "tie_periodic", "free_field_column", "attach_free_field"]
 
 
@@ -42,6 +42,29 @@ def wave_speeds(E, nu, rho):
     G = E / (2.0 * (1.0 + nu))
     M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu))
     return math.sqrt(M / rho), math.sqrt(G / rho)
+
+
+# The six faces of a stdBrick by local node (bottom 1-4 and top 5-8, each counterclockwise).
+_BRICK_FACES = ((0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
+
+
+def brick_faces(ops, elements, axis, value, tol=1e-6):
+    """The 4-node faces of the given 8-node bricks (``eleNodes``) that lie in
+    the plane where coordinate ``axis`` (1, 2 or 3) equals ``value``: the
+    input of :func:`viscous_boundary` or :func:`compliant_base` for a side or
+    the base of a brick mesh."""
+    if axis not in (1, 2, 3):
+        raise ValueError("brick_faces: axis is 1, 2 or 3")
+    faces = []
+    for e in elements:
+        nodes = ops.eleNodes(e)
+        if len(nodes) != 8:
+            raise ValueError(f"brick_faces: element {e} does not have 8 nodes")
+        on = [abs(ops.nodeCoord(n)[axis - 1] - value) <= tol for n in nodes]
+        for face in _BRICK_FACES:
+            if all(on[i] for i in face):
+                faces.append([nodes[i] for i in face])
+    return faces
 
 
 _GAUSS = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))

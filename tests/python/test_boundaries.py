@@ -144,6 +144,34 @@ def test_compliant_base_force_is_the_rock_dashpot_times_the_outcrop_velocity(mod
         assert np.allclose(model.nodeReaction(n), [0.0, -2.4 * 400.0 * 0.375, 0.0], rtol=1e-12)
 
 
+def test_brick_faces_find_the_faces_of_a_side(model):
+    """A 2 x 2 x 1 block of bricks 1.5 x 2 x 3: two faces on x = 0 and on y = 4,
+    four on z = 0; their areas add up to the side's."""
+    model.model("basic", "-ndm", 3, "-ndf", 3)
+    model.nDMaterial("ElasticIsotropic", 1, E, NU, RHO)
+
+    def tag(i, j, k):
+        return 1 + i + 3 * j + 9 * k
+
+    for k in range(2):
+        for j in range(3):
+            for i in range(3):
+                model.node(tag(i, j, k), 1.5 * i, 2.0 * j, 3.0 * k)
+    elements = []
+    for j in range(2):
+        for i in range(2):
+            e = 1 + i + 2 * j
+            model.element("stdBrick", e, tag(i, j, 0), tag(i + 1, j, 0), tag(i + 1, j + 1, 0), tag(i, j + 1, 0),
+                          tag(i, j, 1), tag(i + 1, j, 1), tag(i + 1, j + 1, 1), tag(i, j + 1, 1), 1)
+            elements.append(e)
+    for axis, value, count, area in ((1, 0.0, 2, 4.0 * 3.0), (2, 4.0, 2, 3.0 * 3.0), (3, 0.0, 4, 3.0 * 4.0)):
+        faces = bd.brick_faces(model, elements, axis, value)
+        assert len(faces) == count
+        total = sum(bd.face_areas(model, faces).values())
+        assert abs(abs(total[axis - 1]) - area) < 1e-12 and np.linalg.norm(total) == pytest.approx(area)
+    assert bd.brick_faces(model, elements, 1, 0.7) == []
+
+
 def test_ties(model):
     model.model("basic", "-ndm", 3, "-ndf", 3)
     for tag, (x, y, z) in enumerate([(0, 0, 0), (1, 0, 0), (0, 0, 1), (1, 0, 1), (1, 0, 1.0000001)], start=1):
