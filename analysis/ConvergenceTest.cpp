@@ -21,6 +21,7 @@ double ConvergenceTest::norm(const Vector& v) const {
 
 void ConvergenceTest::start(const LinearSystem&) {
   iteration_ = 0;
+  failed_ = false;
   norms_.clear();
 }
 
@@ -36,13 +37,17 @@ ConvergenceTest::Result ConvergenceTest::test(const LinearSystem& system) {
     if (printFlag_ == 2) std::cerr << name() << ": converged in " << iteration_ << " iterations, norm " << value << "\n";
     return Result::Converged;
   }
-  if (!std::isfinite(value)) return Result::Failed;
+  if (!std::isfinite(value)) {
+    failed_ = true;
+    return Result::Failed;
+  }
   if (iteration_ >= maxIterations_) {
     if (printFlag_ == 5) {
       std::cerr << name() << ": no convergence in " << iteration_ << " iterations (norm " << value
                 << "); accepted as converged (printFlag 5)\n";
       return Result::Converged;
     }
+    failed_ = true;
     return Result::Failed;
   }
   return Result::Continue;

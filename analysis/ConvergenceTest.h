@@ -25,6 +25,8 @@ class ConvergenceTest {
   Result test(const LinearSystem& system);
 
   int numIterations() const { return iteration_; }
+  // OpenSees' testIter: one past the last iteration when the step failed.
+  int reportedIterations() const { return failed_ ? iteration_ + 1 : iteration_; }
   const std::vector<double>& norms() const { return norms_; }
   double tolerance() const { return tolerance_; }
   int maxIterations() const { return maxIterations_; }
@@ -38,6 +40,7 @@ class ConvergenceTest {
   int printFlag_;
   int normType_;
   int iteration_ = 0;
+  bool failed_ = false;
   std::vector<double> norms_;
 };
 

@@ -13,9 +13,13 @@ bool Newton::prepareTangent(AnalysisModel& model, Integrator& integrator, int it
   using S = AnalysisModel::Stiffness;
   S which = S::Current;
   if (tangent_ == Tangent::Initial || (tangent_ == Tangent::InitialThenCurrent && iteration == 0)) which = S::Initial;
-  // The initial stiffness never changes: factor it once and keep it.
-  if (which == S::Initial && model.factoredIs(S::Initial)) return true;
   if (modified_ && iteration > 0 && model.system().isFactored()) return true;
+  return formAndFactor(model, integrator, which);
+}
+
+bool Newton::formAndFactor(AnalysisModel& model, Integrator& integrator, AnalysisModel::Stiffness which) {
+  // The initial stiffness never changes: factor it once and keep it.
+  if (which == AnalysisModel::Stiffness::Initial && model.factoredIs(which)) return true;
   integrator.formTangent(model, which);
   if (!model.factor(which)) {
     singular_ = true;

@@ -11,12 +11,15 @@ class Newton : public Algorithm {
  public:
   enum class Tangent { Current, Initial, InitialThenCurrent };
   Newton(Tangent tangent, bool modified) : tangent_(tangent), modified_(modified) {}
+  virtual ~Newton() = default;
   std::string name() const override { return modified_ ? "ModifiedNewton" : "Newton"; }
   int solveCurrentStep(AnalysisModel& model, Integrator& integrator, ConvergenceTest& test) override;
 
  protected:
   // Forms and factors the tangent this iteration needs; false if singular.
-  bool prepareTangent(AnalysisModel& model, Integrator& integrator, int iteration);
+  virtual bool prepareTangent(AnalysisModel& model, Integrator& integrator, int iteration);
+  // Forms and factors one kind of tangent (the initial one only once).
+  bool formAndFactor(AnalysisModel& model, Integrator& integrator, AnalysisModel::Stiffness which);
 
   Tangent tangent_;
   bool modified_;

@@ -175,7 +175,7 @@ Result Interpreter::getEigenvalues(CommandArgs& a) {
 Result Interpreter::testIter(CommandArgs& a) {
   a.expectEnd();
   if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
-  return static_cast<long long>(components_.test->numIterations());
+  return static_cast<long long>(components_.test->reportedIterations());
 }
 
 // As OpenSees: one value per allowed iteration (maxIter), the norms of the

@@ -84,8 +84,13 @@ Result Interpreter::nodeBounds(CommandArgs& a) {
   return std::vector<double>{lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()};
 }
 
-// OpenSees' numIter: the iterations of the last step, as testIter.
-Result Interpreter::numIter(CommandArgs& a) { return testIter(a); }
+// OpenSees' numIter: the iterations the last step made (testIter reports
+// one more when the step failed).
+Result Interpreter::numIter(CommandArgs& a) {
+  a.expectEnd();
+  if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
+  return static_cast<long long>(components_.test->numIterations());
+}
 
 Result Interpreter::elementShortcut(CommandArgs& a, const char* command, const char* response) {
   const int tag = a.nextInt("eleTag");

@@ -36,4 +36,5 @@ SCRIPTS = (
     "ground_motion",
     "dynamics_sdof_mdof",
     "shear_column",
+    "newton_variants",
 )
