@@ -177,9 +177,9 @@ def test_steady_state_amplification_at_f1(model, base):
     """Harmonic shaking at f1 for 40 periods (the first mode's start-up
     transient falls to exp(-2 pi zeta 35) = 2e-5 in the fitted window); the amplitude fitted over the last 5 periods
     against the closed form (rigid: 12.76; elastic: 3.48). Mesh and time-step
-    errors at f1 (h = 1 m, dt = T1 / 100) shift the frequency by 3e-4 and
-    6e-4, which changes the amplitude by less than 1e-3 even on the rigid
-    base's sharp peak: tolerance 2e-3 (measured in the comment below). The
+    errors at f1 (h = 1 m, dt = T1 / 100) shift the frequency by
+    (k h)^2 / 24 = 2.6e-4 and (w dt)^2 / 12 = 3.3e-4, which changes the
+    amplitude by less than 1e-3 even on the rigid base's sharp peak: tolerance 2e-3 (measured in the comment below). The
     discrete closed form must hold to 1e-4."""
     nz, per = 20, 100
     dt = 1.0 / F1 / per
