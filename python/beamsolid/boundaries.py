@@ -188,39 +188,47 @@ def compliant_base(ops, tags, rho, vp, vs, record, dt, direction=1, kind="vel", 
     ``record``: values at t = 0, dt, 2 dt, ... of the velocity (``kind='vel'``)
     or acceleration (``kind='accel'``, integrated by the trapezoidal rule from
     v(0) = 0, the rule OpenSees uses for ground motions), times ``factor``,
-    along the global ``direction`` (1, 2 or 3). The dashpots are made by
-    :func:`viscous_boundary`; the force goes to a new ``Path`` series (``-dt``,
-    ``-useLast``: after the record the velocity keeps its last value, as the
-    ground does when the acceleration ends) in a new ``Plain`` pattern.
+    along the global ``direction`` (1, 2 or 3; a vertical record on a
+    horizontal base is a P wave and gets rho Vp). Several components at once:
+    ``record={1: values_x, 2: values_y, ...}`` (``direction`` is then unused).
+    The dashpots are made once by :func:`viscous_boundary`; each component's
+    force goes to a new ``Path`` series (``-dt``, ``-useLast``: after the
+    record the velocity keeps its last value, as the ground does when the
+    acceleration ends) in a new ``Plain`` pattern.
 
-    Returns what :func:`viscous_boundary` returns plus 'series', 'pattern' and
-    'velocity' (the velocity values used).
+    Returns what :func:`viscous_boundary` returns plus 'series', 'pattern'
+    and 'velocity', each {direction: tag or velocity values}.
     """
     if kind not in ("vel", "accel"):
         raise ValueError("compliant_base: kind is 'vel' or 'accel'")
-    if direction not in (1, 2, 3):
+    records = record if isinstance(record, dict) else {direction: record}
+    if not records or any(d not in (1, 2, 3) for d in records):
         raise ValueError("compliant_base: direction is 1, 2 or 3")
-    if not dt > 0.0 or len(record) < 2:
+    if not dt > 0.0 or any(len(r) < 2 for r in records.values()):
         raise ValueError("compliant_base: need dt > 0 and a record of at least two values")
-    values = np.asarray(record, dtype=float) * factor
-    if kind == "accel":
-        velocity = np.zeros_like(values)
-        velocity[1:] = np.cumsum(0.5 * dt * (values[1:] + values[:-1]))
-    else:
-        velocity = values
+    velocities = {}
+    for d, r in records.items():
+        values = np.asarray(r, dtype=float) * factor
+        if kind == "accel":
+            velocity = np.zeros_like(values)
+            velocity[1:] = np.cumsum(0.5 * dt * (values[1:] + values[:-1]))
+        else:
+            velocity = values
+        velocities[d] = velocity
     created = viscous_boundary(ops, tags, rho, vp, vs, faces=faces, nodes=nodes)
-    series = tags.take("series")
-    ops.timeSeries("Path", series, "-dt", dt, "-values", *map(float, velocity), "-useLast")
-    pattern = tags.take("pattern")
-    ops.pattern("Plain", pattern, series)
-    e = np.zeros(3)
-    e[direction - 1] = 1.0
     scale = 2.0 if incident else 1.0
-    for n in sorted(created["tensors"]):
-        force = scale * created["tensors"][n] @ e
-        ndf = len(ops.nodeDisp(n))
-        ops.load(n, *map(float, force), *([0.0] * (ndf - 3)))
-    created.update(series=series, pattern=pattern, velocity=velocity)
+    series_tags, pattern_tags = {}, {}
+    for d in sorted(velocities):
+        series = tags.take("series")
+        ops.timeSeries("Path", series, "-dt", dt, "-values", *map(float, velocities[d]), "-useLast")
+        pattern = tags.take("pattern")
+        ops.pattern("Plain", pattern, series)
+        for n in sorted(created["tensors"]):
+            force = scale * created["tensors"][n][:, d - 1]
+            ndf = len(ops.nodeDisp(n))
+            ops.load(n, *map(float, force), *([0.0] * (ndf - 3)))
+        series_tags[d], pattern_tags[d] = series, pattern
+    created.update(series=series_tags, pattern=pattern_tags, velocity=velocities)
     return created
 
 

@@ -107,22 +107,16 @@ def test_area_vectors_and_faces_give_the_same_dashpots(model):
     assert np.allclose(corner[1], both[1])
 
 
-def test_compliant_base_force_is_the_rock_dashpot_times_the_outcrop_velocity(model):
-    """Static check of the input force: at time t the load on a base node is
-    C e v_out(t) (2 C e v_inc with incident=True); an acceleration record is
-    integrated by the trapezoidal rule."""
+def base_reactions(model, record, **kw):
+    """Four base nodes on a 2 x 2 face under compliant_base (rock rho 2.4,
+    Vp 800, Vs 400, dt 0.1), fixed so that the input load comes back as the
+    reaction at t = 0.25 (a spring on a node of its own keeps the static
+    system from being empty). Returns (what compliant_base made, reactions)."""
     model.model("basic", "-ndm", 3, "-ndf", 3)
     for tag, (x, y) in enumerate([(0, 0), (2, 0), (2, 2), (0, 2)], start=1):
         model.node(tag, float(x), float(y), 0.0)
-    dt = 0.1
-    acc = np.array([0.0, 1.0, 3.0, 2.0, 0.0])
     made = bd.compliant_base(model, bd.Tags(node=10, element=10, material=10, series=3, pattern=4),
-                             2.4, 800.0, 400.0, acc, dt, direction=2, kind="accel", faces=[[1, 2, 3, 4]])
-    assert np.allclose(made["velocity"], [0.0, 0.05, 0.25, 0.5, 0.6])
-    assert made["series"] == 3 and made["pattern"] == 4
-    # Fix the base nodes and read the load back as the reaction at t = 0.25,
-    # between the samples 0.25 and 0.5: v_out = 0.375. A spring on a node of
-    # its own keeps the static system from being empty.
+                             2.4, 800.0, 400.0, record, 0.1, faces=[[1, 2, 3, 4]], **kw)
     for n in (1, 2, 3, 4):
         model.fix(n, 1, 1, 1)
     model.node(98, 5.0, 5.0, 0.0)
@@ -140,8 +134,29 @@ def test_compliant_base_force_is_the_rock_dashpot_times_the_outcrop_velocity(mod
     model.analysis("Static")
     assert model.analyze(1) == 0
     model.reactions()
-    for n in (1, 2, 3, 4):  # rho_r Vs_r A_a v_out, A_a = 1
-        assert np.allclose(model.nodeReaction(n), [0.0, -2.4 * 400.0 * 0.375, 0.0], rtol=1e-12)
+    return made, [np.array(model.nodeReaction(n)) for n in (1, 2, 3, 4)]
+
+
+def test_compliant_base_force_is_the_rock_dashpot_times_the_outcrop_velocity(model):
+    """The input load on a base node of area A_a = 1 is rho_r Vs_r A_a v_out(t)
+    along a horizontal direction; an acceleration record is integrated by the
+    trapezoidal rule: at t = 0.25, between the samples 0.25 and 0.5, v_out = 0.375."""
+    acc = np.array([0.0, 1.0, 3.0, 2.0, 0.0])
+    made, reactions = base_reactions(model, acc, direction=2, kind="accel")
+    assert np.allclose(made["velocity"][2], [0.0, 0.05, 0.25, 0.5, 0.6])
+    assert made["series"] == {2: 3} and made["pattern"] == {2: 4}
+    for r in reactions:
+        assert np.allclose(r, [0.0, -2.4 * 400.0 * 0.375, 0.0], rtol=1e-12)
+
+
+def test_compliant_base_with_two_components_and_the_incident_wave(model):
+    """record={1: vx, 3: vz} with incident=True: 2 rho_r Vs_r A_a vx along x and,
+    the vertical being normal to the base (a P wave), 2 rho_r Vp_r A_a vz."""
+    vx, vz = [0.0, 1.0, 2.0, 2.0], [0.0, -1.0, 0.0, 4.0]
+    made, reactions = base_reactions(model, {1: vx, 3: vz}, incident=True)
+    assert made["series"] == {1: 3, 3: 4} and made["pattern"] == {1: 4, 3: 5}
+    for r in reactions:  # at t = 0.25: vx = 2, vz = 2
+        assert np.allclose(r, [-2 * 2.4 * 400.0 * 2.0, 0.0, -2 * 2.4 * 800.0 * 2.0], rtol=1e-12)
 
 
 def test_brick_faces_find_the_faces_of_a_side(model):
