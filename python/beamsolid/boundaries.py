@@ -281,7 +281,7 @@ def tie_periodic(ops, side_a, side_b, dofs=(1, 2, 3), tol=1e-6):
     return pairs
 
 
-def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed"):
+def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed", body=None):
     """A separate one-element-wide column of stdBricks that computes the free
     field: nodes at the four corners of a ``width`` x ``width`` square centred
     on (x, y) at each of ``heights`` (bottom to top), brick k between heights k
@@ -291,6 +291,8 @@ def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed"):
     the main mesh attached to it by :func:`attach_free_field` barely moves it.
     ``base='fixed'`` fixes the bottom nodes; ``'free'`` leaves them for
     :func:`compliant_base` / :func:`viscous_boundary` (faces: 'base_face').
+    ``body=(b1, b2, b3)``: the bricks' body force per unit volume (as the
+    main mesh's, e.g. (0, 0, -rho g) for gravity).
 
     Returns {'levels': {height: retained node}, 'nodes', 'elements',
     'base_nodes', 'base_face', 'area'}."""
@@ -316,7 +318,7 @@ def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed"):
     elements = []
     for k, mat in enumerate(materials):
         e = tags.take("element")
-        ops.element("stdBrick", e, *rings[k], *rings[k + 1], mat)
+        ops.element("stdBrick", e, *rings[k], *rings[k + 1], mat, *(body or ()))
         elements.append(e)
     if base == "fixed":
         for n in rings[0]:

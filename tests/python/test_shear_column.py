@@ -388,3 +388,77 @@ def test_free_field_column_on_elastic_bedrock(model):
     surface = run(model, steps, dt, centre)
     assert np.max(np.abs(free_field)) > 1.0  # the outcrop peak is 1
     assert np.max(np.abs(surface - free_field)) / np.max(np.abs(free_field)) < 1e-8
+
+
+def test_gravity_then_shaking_on_the_elastic_bedrock(model):
+    """The staging docs/dynamics.md describes: gravity (body force -rho g in
+    the bricks of a 10 m x 5 m box and of the free-field column) with the
+    base fixed, then the horizontal fixes removed (remove('sp')) and the
+    bedrock added with horizontal dashpots only (vp = 0; the base stays fixed
+    vertically). The free-field column settles by the confined closed form
+    rho g H^2 / (2 M) (M = lambda + 2 G; to 1e-10), and the shaking that
+    follows gives the box's centre the free field's motion (1e-8)."""
+    nx, lx, ly, nz, dt, steps = 2, 10.0, 5.0, 10, 0.01, 300
+    record = ricker(np.arange(steps + 1) * dt, 2.5, 0.6)
+    g = 9.81
+    M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
+
+    def build(with_box):
+        model.wipe()
+        model.model("basic", "-ndm", 3, "-ndf", 3)
+        model.nDMaterial("ElasticIsotropic", 1, E, NU, RHO)
+        tags = bd.Tags(node=100000, element=100000, material=10, series=10, pattern=10)
+        ff = bd.free_field_column(model, tags, [H * k / nz for k in range(nz + 1)], [1] * nz, 50.0, 0.0, 100.0,
+                                  base="free", body=(0.0, 0.0, -RHO * g))
+        held = [ff["levels"][0.0]]  # the free-field base: the other three nodes follow it
+        model.fix(held[0], 1, 1, 1)
+        faces, top = [ff["base_face"]], ff["levels"][H]
+        if with_box:
+            def tag(i, j, k):
+                return 1 + i + (nx + 1) * (j + 2 * k)
+
+            for k in range(nz + 1):
+                for j in range(2):
+                    for i in range(nx + 1):
+                        model.node(tag(i, j, k), lx * i / nx, ly * j, H * k / nz)
+            for j in range(2):
+                for i in range(nx + 1):
+                    if i in (0, nx):
+                        model.fix(tag(i, j, 0), 0, 0, 1)  # tied horizontally below
+                    else:
+                        model.fix(tag(i, j, 0), 1, 1, 1)
+                        held.append(tag(i, j, 0))
+            for k in range(nz):
+                for i in range(nx):
+                    model.element("stdBrick", 1 + i + nx * k, tag(i, 0, k), tag(i + 1, 0, k), tag(i + 1, 1, k),
+                                  tag(i, 1, k), tag(i, 0, k + 1), tag(i + 1, 0, k + 1), tag(i + 1, 1, k + 1),
+                                  tag(i, 1, k + 1), 1, 0.0, 0.0, -RHO * g)
+            bd.attach_free_field(model, ff["levels"], [tag(i, j, 0) for j in range(2) for i in (0, nx)], dofs=(1, 2))
+            bd.attach_free_field(model, ff["levels"],
+                                 [tag(i, j, k) for k in range(1, nz + 1) for j in range(2) for i in (0, nx)])
+            faces += bd.brick_faces(model, range(1, nx + 1), 3, 0.0)
+            top = tag(nx // 2, 0, nz)
+        model.constraints("Transformation")
+        model.numberer("RCM")
+        model.system("UmfPack")
+        model.test("NormDispIncr", 1e-10, 10)
+        model.algorithm("Newton")
+        model.integrator("LoadControl", 1.0)
+        model.analysis("Static")
+        assert model.analyze(1) == 0
+        settlement = model.nodeDisp(ff["levels"][H], 3)
+        model.loadConst("-time", 0.0)
+        model.wipeAnalysis()
+        for n in held:
+            model.remove("sp", n, 1)
+            model.remove("sp", n, 2)
+        bd.compliant_base(model, tags, RHO_R, 0.0, VS_R, record, dt, faces=faces)
+        model.rayleigh(0.0, BETA, 0.0, 0.0)
+        transient(model, dt)
+        return settlement, run(model, steps, dt, top)
+
+    settlement, free_field = build(False)
+    assert abs(settlement / (-RHO * g * H**2 / (2 * M)) - 1) < 1e-10
+    _, surface = build(True)
+    assert np.max(np.abs(free_field)) > 1.0
+    assert np.max(np.abs(surface - free_field)) / np.max(np.abs(free_field)) < 1e-8
