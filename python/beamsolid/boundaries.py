@@ -290,7 +290,11 @@ def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed", 
     large (mass and stiffness grow as width^2, the wave speeds do not) so that
     the main mesh attached to it by :func:`attach_free_field` barely moves it.
     ``base='fixed'`` fixes the bottom nodes; ``'free'`` leaves them for
-    :func:`compliant_base` / :func:`viscous_boundary` (faces: 'base_face').
+    :func:`compliant_base` / :func:`viscous_boundary` (faces: 'base_face');
+    ``'rollers'`` fixes them vertically and ties them in dofs 1, 2 only (a
+    base on horizontal dashpots that carries gravity; OpenSees' Transformation
+    handler mishandles a fix on a retained node's tied dof, so the vertical is
+    fixed on every base node rather than on the retained one).
     ``body=(b1, b2, b3)``: the bricks' body force per unit volume (as the
     main mesh's, e.g. (0, 0, -rho g) for gravity).
 
@@ -301,8 +305,8 @@ def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed", 
         raise ValueError("free_field_column: heights must rise, at least two")
     if len(materials) != len(heights) - 1:
         raise ValueError("free_field_column: one material per brick (len(heights) - 1)")
-    if base not in ("fixed", "free"):
-        raise ValueError("free_field_column: base is 'fixed' or 'free'")
+    if base not in ("fixed", "free", "rollers"):
+        raise ValueError("free_field_column: base is 'fixed', 'free' or 'rollers'")
     if not width > 0.0:
         raise ValueError("free_field_column: width must be > 0")
     h = 0.5 * width
@@ -320,15 +324,17 @@ def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed", 
         e = tags.take("element")
         ops.element("stdBrick", e, *rings[k], *rings[k + 1], mat, *(body or ()))
         elements.append(e)
+    levels = tie_levels(ops, [n for ring in rings[1:] for n in ring], (1, 2, 3))
     if base == "fixed":
         for n in rings[0]:
             ops.fix(n, 1, 1, 1)
-        tied = [n for ring in rings[1:] for n in ring]
+        levels[heights[0]] = rings[0][0]
     else:
-        tied = [n for ring in rings for n in ring]
-    levels = tie_levels(ops, tied, (1, 2, 3))
-    if base == "fixed":
-        levels = {heights[0]: rings[0][0], **levels}
+        if base == "rollers":
+            for n in rings[0]:
+                ops.fix(n, 0, 0, 1)
+        levels.update(tie_levels(ops, rings[0], (1, 2) if base == "rollers" else (1, 2, 3)))
+    levels = dict(sorted(levels.items()))
     return {"levels": levels, "nodes": [n for r in rings for n in r], "elements": elements,
             "base_nodes": rings[0], "base_face": rings[0], "area": width * width}
 

@@ -3,7 +3,9 @@ same helpers build the model under OpenSeesPy): a tied column of stdBricks on
 an elastic bedrock (dashpots and the Joyner-Chen force from an acceleration
 record) with stiffness-proportional Rayleigh damping; the same column on
 Lysmer dashpots hit by S and P force pulses at the surface; a small box whose
-far faces follow a free-field column, under UniformExcitation. Newmark
+far faces follow a free-field column, under UniformExcitation; the same box
+with gravity on a fixed base, then the horizontal fixes removed and shaken
+on the elastic bedrock. Newmark
 average acceleration, Newton: displacements, velocities, accelerations,
 iteration counts and the dashpot forces at every step.
 
@@ -154,4 +156,52 @@ def run(ops):
     ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
     ops.rayleigh(0.0, 0.002, 0.0, 0.0)
     _run(ops, 150, dt, [tag(1, 0, nz), tag(0, 1, nz), tag(1, 1, 2), ff["levels"][8.0]], [], out, "free_field")
+    # 4. Gravity, then the bedrock (docs/dynamics.md's staging).
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    ops.nDMaterial("ElasticIsotropic", 1, E, NU, 0.0)
+    body = (0.0, 0.0, -RHO * 9.81)
+    for k in range(nz + 1):
+        for j in range(2):
+            for i in range(nx + 1):
+                ops.node(tag(i, j, k), 3.0 * i, 2.0 * j, 2.0 * k)
+    held = []
+    for j in range(2):
+        for i in range(nx + 1):
+            if i in (0, nx):
+                ops.fix(tag(i, j, 0), 0, 0, 1)
+            else:
+                ops.fix(tag(i, j, 0), 1, 1, 1)
+                held.append(tag(i, j, 0))
+    for k in range(nz):
+        for i in range(nx):
+            ops.element("stdBrick", 1 + i + nx * k, tag(i, 0, k), tag(i + 1, 0, k), tag(i + 1, 1, k),
+                        tag(i, 1, k), tag(i, 0, k + 1), tag(i + 1, 0, k + 1), tag(i + 1, 1, k + 1),
+                        tag(i, 1, k + 1), 1, *body)
+    tags = bd.Tags(node=1000, element=1000, material=10, series=1, pattern=1)
+    ff = bd.free_field_column(ops, tags, [2.0 * k for k in range(nz + 1)], [1] * nz, 20.0, 0.0, 30.0,
+                              base="rollers", body=body)
+    ops.fix(ff["levels"][0.0], 1, 1, 0)
+    held.append(ff["levels"][0.0])
+    bd.attach_free_field(ops, ff["levels"], [tag(i, j, 0) for j in range(2) for i in (0, nx)], dofs=(1, 2))
+    bd.attach_free_field(ops, ff["levels"], [tag(i, j, k) for k in range(1, nz + 1) for j in range(2)
+                                             for i in (0, nx)])
+    _lump(ops, list(range(1, nx * nz + 1)) + ff["elements"])
+    ops.constraints("Transformation")
+    ops.numberer("RCM")
+    ops.system("UmfPack")
+    ops.test("NormDispIncr", 1e-10, 10)
+    ops.algorithm("Newton")
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    out["gravity"] = [ops.analyze(1), ops.testIter()] + [v for n in ops.getNodeTags() for v in ops.nodeDisp(n)]
+    ops.loadConst("-time", 0.0)
+    ops.wipeAnalysis()
+    for n in held:
+        ops.remove("sp", n, 1)
+        ops.remove("sp", n, 2)
+    dt = 0.005
+    faces = [ff["base_face"]] + [[tag(i, 0, 0), tag(i + 1, 0, 0), tag(i + 1, 1, 0), tag(i, 1, 0)] for i in range(nx)]
+    bd.compliant_base(ops, tags, 2.4, 0.0, 400.0, _ricker(100, dt, 5.0, 0.25), dt, faces=faces)
+    _run(ops, 120, dt, [tag(1, 0, nz), tag(1, 1, 0), tag(0, 0, 0), ff["levels"][8.0]], [], out, "gravity_then_shaking")
     return out
