@@ -292,9 +292,10 @@ def free_field_column(ops, tags, heights, materials, x, y, width, base="fixed", 
     ``base='fixed'`` fixes the bottom nodes; ``'free'`` leaves them for
     :func:`compliant_base` / :func:`viscous_boundary` (faces: 'base_face');
     ``'rollers'`` fixes them vertically and ties them in dofs 1, 2 only (a
-    base on horizontal dashpots that carries gravity; OpenSees' Transformation
-    handler mishandles a fix on a retained node's tied dof, so the vertical is
-    fixed on every base node rather than on the retained one).
+    base on horizontal dashpots that carries gravity; the vertical is fixed on
+    every base node rather than on the retained one, since OpenSeesPy's
+    Transformation handler moves nodes tied in a dof wrongly in transient runs
+    when their retained node is fixed in it).
     ``body=(b1, b2, b3)``: the bricks' body force per unit volume (as the
     main mesh's, e.g. (0, 0, -rho g) for gravity).
 
