@@ -180,11 +180,20 @@ VectorView StdBrick::resistingForce() {
 }
 
 MatrixView StdBrick::massMatrix() {
-  // Lumped: row sums of the consistent mass, rho * integral(N_a dV) per dof.
+  // Consistent, rho * integral(N_a N_b dV) on the 2x2x2 rule, as OpenSees'
+  // stdBrick (checked against OpenSeesPy's periods).
   mass_.setZero();
   const double rho = materials_[0]->density();
-  for (int a = 0; a < kNodes; ++a)
-    for (int i = 0; i < 3; ++i) mass_(3 * a + i, 3 * a + i) = rho * nodalVolume_(a);
+  if (rho == 0.0) return viewOf(mass_);
+  for (int g = 0; g < kGaussPoints; ++g) {
+    const Eigen::Matrix<double, 8, 1> n =
+        shapeFunctions(gaussCoordinate(g, 0), gaussCoordinate(g, 1), gaussCoordinate(g, 2));
+    for (int a = 0; a < kNodes; ++a)
+      for (int b = 0; b < kNodes; ++b) {
+        const double m = rho * weightedDetJ_[g] * n(a) * n(b);
+        for (int i = 0; i < 3; ++i) mass_(3 * a + i, 3 * b + i) += m;
+      }
+  }
   return viewOf(mass_);
 }
 

@@ -3,8 +3,8 @@ boundaries of beamsolid.boundaries, against closed forms.
 
 The column: H = 20 m of soil (rho = 2 t/m^3, Vs = 100 m/s, nu = 0.3; kN, m,
 s), nz bricks of 1 m x 1 m in plan, all nodes of a level tied in dofs 1-3
-(tie_levels), so that horizontal motion is exactly a chain of lumped masses
-rho A h (half at the ends) and shear springs G A / h. f1 = Vs / 4H = 1.25 Hz.
+(tie_levels), so that horizontal motion is exactly a chain of shear springs
+G A / h with the bricks' consistent mass rho A h / 6 [[2, 1], [1, 2]]. f1 = Vs / 4H = 1.25 Hz.
 
 Damping is Rayleigh stiffness-proportional, rayleigh(0, betaK, 0, 0): in the
 continuum a Kelvin-Voigt solid, G* = G (1 + i w betaK) (time factor e^{iwt}),
@@ -13,8 +13,8 @@ Closed forms (surface over base / over rock outcrop):
   rigid bedrock    |u_s / u_b|   = 1 / |cos(k* H)|
   elastic bedrock  |u_s / u_out| = 1 / |cos(k* H) + i alpha* sin(k* H)|,
                    alpha* = rho Vs* / (rho_r Vs_r)  (derived in docs/dynamics.md).
-Errors against them come from the mesh (lumped-mass chain: frequencies low
-by (k h)^2 / 24) and from Newmark's average acceleration (the trapezoidal
+Errors against them come from the mesh (consistent-mass chain: frequencies
+high by (k h)^2 / 24) and from Newmark's average acceleration (the trapezoidal
 rule: the discrete response at w is the semi-discrete one at
 W = (2 / dt) tan(w dt / 2), frequencies low by (w dt)^2 / 12). The same
 runs are also checked against that exact discrete answer (the chain's
@@ -112,35 +112,33 @@ def continuum(w, base):
 
 
 def chain(w, dt, nz, base):
-    """The discrete model's exact answer: the lumped-mass shear chain at the
-    trapezoidal rule's frequency W = (2/dt) tan(w dt / 2). Rigid: absolute
-    surface acceleration over base acceleration; elastic: surface velocity
-    over outcrop velocity."""
+    """The discrete model's exact answer: the shear chain with the bricks'
+    consistent mass (per brick rho A h / 6 [[2, 1], [1, 2]] in the tied
+    horizontal motion) at the trapezoidal rule's frequency
+    W = (2/dt) tan(w dt / 2). Rigid: absolute surface acceleration over base
+    acceleration; elastic: surface velocity over outcrop velocity."""
     h, A = H / nz, 1.0
     k, m = G * A / h, RHO * A * h
-    n = nz if base == "rigid" else nz + 1  # unknowns: levels 1..nz or 0..nz
-    K = np.zeros((n, n))
-    M = np.full(n, m)
-    M[-1] = m / 2
-    if base != "rigid":
-        M[0] = m / 2
-    off = 0 if base == "rigid" else 1
-    for e in range(nz):  # spring between level e and e + 1
-        i, j = e - 1 + off, e + off
-        for a, b_, s in ((i, i, 1), (j, j, 1), (i, j, -1), (j, i, -1)):
-            if a >= 0 and b_ >= 0:
-                K[a, b_] += s * k
+    # every level 0..nz; the rigid base's level 0 is then dropped
+    K = np.zeros((nz + 1, nz + 1))
+    M = np.zeros((nz + 1, nz + 1))
+    for e in range(nz):
+        for a, b_, s in ((e, e, 1), (e + 1, e + 1, 1), (e, e + 1, -1), (e + 1, e, -1)):
+            K[a, b_] += s * k
+            M[a, b_] += m / 6.0 * (2.0 if s > 0 else 1.0)
     out = []
     for wk in np.atleast_1d(w):
         W = 2.0 / dt * math.tan(wk * dt / 2)
-        D = K * (1 + 1j * W * BETA) - W**2 * np.diag(M)
+        D = K * (1 + 1j * W * BETA) - W**2 * M
         if base == "rigid":
-            u = np.linalg.solve(D, -M)  # relative displacement per unit base acceleration
+            # relative displacement per unit base acceleration: inertia -M r, r = 1 on every level
+            f = -M[1:, :].sum(axis=1)
+            u = np.linalg.solve(D[1:, 1:], f)
             out.append(1.0 - W**2 * u[-1])
         else:
             c = RHO_R * VS_R * A
             D[0, 0] += 1j * W * c
-            f = np.zeros(n, complex)
+            f = np.zeros(nz + 1, complex)
             f[0] = c  # force per unit outcrop velocity
             out.append(1j * W * np.linalg.solve(D, f)[-1])
     return np.array(out)
@@ -150,9 +148,10 @@ def chain(w, dt, nz, base):
 def test_pulse_travels_from_base_to_surface_in_H_over_Vs(model):
     """A Ricker velocity pulse (5 Hz) comes up through an elastic bedrock; the
     time between its peak at the base and at the surface is H / Vs = 0.2 s.
-    The peak moves at the chain's group velocity Vs cos(k h / 2): slow by
-    (k h)^2 / 8 = 1.2 % at 5 Hz for h = 1 m (measured 1.1 %), a quarter of
-    that at h = 0.5 m (measured 0.28 %)."""
+    With the bricks' consistent mass (as OpenSees' stdBrick) the chain's waves
+    run fast, by a second-order error in k h: measured -0.97 % at h = 1 m and
+    -0.23 % at h = 0.5 m (a lumped mass would make them slow by about as
+    much)."""
     dt, steps = 0.001, 600
     t = np.arange(steps + 1) * dt
     errors = []
@@ -166,8 +165,8 @@ def test_pulse_travels_from_base_to_surface_in_H_over_Vs(model):
             surface.append(model.nodeVel(rings[-1][2], 1))
         travel = peak_time(np.array(surface), dt) - peak_time(np.array(base), dt)
         errors.append(travel / (H / VS) - 1.0)
-    assert 0.0 < errors[0] < 0.015, errors
-    assert 0.0 < errors[1] < 0.004, errors
+    assert -0.015 < errors[0] < 0.0, errors
+    assert -0.004 < errors[1] < 0.0, errors
     assert 3.5 < errors[0] / errors[1] < 4.5, errors  # the mesh's second order
 
 
@@ -353,8 +352,8 @@ def test_free_field_column_gives_a_box_the_free_field(model):
     - Sides free: the box rocks and shears as a wall, 46 % off (> 30 %).
     - x faces tied to each other (periodic, no free-field column): round-off.
     - Sides tied in the horizontal dofs only: the faces lack the vertical
-      complementary shear; the centre of a box 12 H wide is 1.7 % off
-      (tolerance 2.5 %)."""
+      complementary shear; the centre of a box 12 H wide is 3.1 % off
+      (tolerance 4 %)."""
     dt, steps, nz = 0.02, 200, 10
     rings = column(model, nz, "rigid", damping=False)
     free_field = shake(model, dt, steps, rings[-1][0])
@@ -368,7 +367,7 @@ def test_free_field_column_gives_a_box_the_free_field(model):
     assert off(6, 30.0, None) > 0.3
     # Periodic x faces (tie_periodic) make the box a period of the layer too.
     assert off(2, 10.0, None, periodic=True) < 1e-8
-    assert off(12, 240.0, 100.0, dofs=(1, 2)) < 0.025
+    assert off(12, 240.0, 100.0, dofs=(1, 2)) < 0.04  # measured 3.1 %
 
 
 def test_free_field_column_on_elastic_bedrock(model):

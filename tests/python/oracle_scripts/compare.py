@@ -45,9 +45,6 @@ TOLERANCES = (
 
 # (script, key pattern) -> why BeamSolid differs on purpose.
 KNOWN_DIFFERENCES = {
-    ("shear_column", "brick_mass.*"):
-        "stdBrick mass: BeamSolid lumps rho integral(N_a dV) on the diagonal; OpenSees' Brick forms the "
-        "consistent mass rho integral(N_a N_b dV) (eigenvalues 8 against 27, and 18/54)",
     ("ground_motion", "uniform.accel.*Rho.nodeUnbalance"):
         "UniformExcitation: BeamSolid applies an element mass's inertia load -M_e r a_g as nodal loads "
         "(nodeUnbalance shows it); OpenSees keeps it inside the element. Displacements and reactions agree",
