@@ -1,14 +1,87 @@
 #include "analysis/AnalysisModel.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
 #include <sstream>
 
+#include "analysis/CondensedSolver.h"
 #include "analysis/ConstraintHandler.h"
 #include "analysis/Numberer.h"
 #include "core/Domain.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
+
+AnalysisModel::AnalysisModel(Domain& domain) : domain_(domain) {}
+AnalysisModel::~AnalysisModel() = default;
+
+namespace {
+
+// BEAMSOLID_CONDENSE=on|off overrides the automatic choice (scripts unchanged).
+LinearSolver::Condensation condensationMode(const LinearSolver& solver) {
+  if (solver.condensation() != LinearSolver::Condensation::Auto) return solver.condensation();
+  const char* env = std::getenv("BEAMSOLID_CONDENSE");
+  if (env && (!std::strcmp(env, "on") || !std::strcmp(env, "1"))) return LinearSolver::Condensation::On;
+  if (env && (!std::strcmp(env, "off") || !std::strcmp(env, "0"))) return LinearSolver::Condensation::Off;
+  return LinearSolver::Condensation::Auto;
+}
+
+}  // namespace
+
+void AnalysisModel::chooseSolver(LinearSolver& solver) {
+  outer_ = &solver;
+  const int n = map_.numEquations();
+  const auto mode = condensationMode(solver);
+  bool use = false;
+  std::vector<char> interior;
+  condensationNote_ = mode == LinearSolver::Condensation::Off ? "no condensation (switched off)"
+                      : n == 0                                 ? "no condensation (no equations)"
+                                                               : "no condensation (it failed on this model)";
+  if (mode != LinearSolver::Condensation::Off && n > 0 && condensationRefusedStamp_ != builtStamp_) {
+    // Interior: equations that constant-tangent elements touch and no other.
+    interior.assign(n, 0);
+    std::vector<char> variable(n, 0);
+    const auto& elements = map_.elements();
+    for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+      const bool constant = elements[e]->hasConstantTangent();
+      for (int i = 0; i < map_.elementMaps()[e].numDOF; ++i)
+        for (auto* t = map_.elementTermsBegin(e, i); t != map_.elementTermsEnd(e, i); ++t)
+          (constant ? interior : variable)[t->equation] = 1;
+    }
+    int nI = 0;
+    for (int eq = 0; eq < n; ++eq) {
+      if (variable[eq]) interior[eq] = 0;
+      nI += interior[eq];
+    }
+    const int nB = n - nI;
+    // The dense interface costs nB^3/3 per factorization: worth it when the
+    // interior is large and the interface small (measured in
+    // benchmarks/condensation.py).
+    const bool pays = n >= 2000 && nB <= 4000 && nI >= 3 * nB;
+    use = nI > 0 && nB <= 20000 && (mode == LinearSolver::Condensation::On || pays);
+    if (!use) condensationNote_ = "no condensation (" + std::to_string(nI) + " of " + std::to_string(n) + " equations condensable)";
+  }
+  if (!use) {
+    condensedActive_ = false;
+    system_.setSolver(&solver);
+    return;
+  }
+  if (!condensed_ || condensed_->interior() != interior || condensed_->requestedName() != solver.requestedName() ||
+      condensed_->requiresSPD() != solver.requiresSPD()) {
+    condensed_ = std::make_unique<CondensedSolver>(solver.requestedName(), solver.backend(), solver.requiresSPD(),
+                                                   std::move(interior));
+    system_.resetSolverState();
+    int nI = 0;
+    for (char c : condensed_->interior()) nI += c;
+    condensationNote_ = "condensing " + std::to_string(nI) + " of " + std::to_string(n) +
+                        " equations (constant-tangent elements only), interface of " + std::to_string(n - nI);
+    std::cerr << "system " << solver.requestedName() << ": " << condensationNote_ << "\n";
+  }
+  condensedActive_ = true;
+  system_.setSolver(condensed_.get());
+}
 
 bool AnalysisModel::setup(const ConstraintHandler& handler, const Numberer& numberer, LinearSolver& solver) {
   // Compare what the handler and numberer are, not where they live: a new
@@ -36,7 +109,7 @@ bool AnalysisModel::setup(const ConstraintHandler& handler, const Numberer& numb
   }
   penaltyAlphaS_ = handler.alphaS();
   penaltyAlphaM_ = handler.alphaM();
-  system_.setSolver(&solver);
+  chooseSolver(solver);
   return rebuild;
 }
 
@@ -222,6 +295,16 @@ void AnalysisModel::trialDisplacement(Vector& out) const {
 
 bool AnalysisModel::factor(Stiffness which) {
   (void)which;
+  if (system_.factor()) return true;
+  if (!condensedActive_) return false;
+  // The interior block may be singular where the whole matrix is not (a
+  // region held only through the interface): solve this pattern plainly.
+  std::cerr << "system " << outer_->requestedName() << ": condensation failed (" << condensed_->lastError()
+            << "); solving without it\n";
+  condensationRefusedStamp_ = builtStamp_;
+  condensationNote_ = "no condensation (it failed on this model: " + condensed_->lastError() + ")";
+  condensedActive_ = false;
+  system_.setSolver(outer_);
   return system_.factor();
 }
 

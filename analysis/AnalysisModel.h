@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,11 +18,14 @@ class Numberer;
 // residual and mass through the DofMap's cached scatter positions, and maps
 // a solution back to node trial displacements. It writes nothing in the
 // Domain but node trial displacements.
+class CondensedSolver;
+
 class AnalysisModel {
  public:
   enum class Stiffness { Current, Initial };
 
-  explicit AnalysisModel(Domain& domain) : domain_(domain) {}
+  explicit AnalysisModel(Domain& domain);
+  ~AnalysisModel();
   Domain& domain() { return domain_; }
 
   // Renumbers and rebuilds the pattern when the Domain, the handler, the
@@ -60,9 +64,15 @@ class AnalysisModel {
   // A readable account of why the last factorization failed, naming dofs.
   std::string describeFactorFailure() const;
 
+  // The condensing solver when one is in use (else null), and why not.
+  const CondensedSolver* condensedSolver() const { return condensedActive_ ? condensed_.get() : nullptr; }
+  const std::string& condensationNote() const { return condensationNote_; }
+
  private:
   void scatterElementMatrix(std::vector<double>& values, int e, const double* k) const;
   void addPenaltyTangent(std::vector<double>& values, double factor) const;
+  // Chooses between the user's solver and the condensing one (setup()).
+  void chooseSolver(LinearSolver& solver);
 
   Domain& domain_;
   DofMap map_;
@@ -73,6 +83,11 @@ class AnalysisModel {
   double penaltyAlphaS_ = 0.0;
   double penaltyAlphaM_ = 0.0;
   std::vector<double> imposedValues_;
+  LinearSolver* outer_ = nullptr;
+  std::unique_ptr<CondensedSolver> condensed_;
+  bool condensedActive_ = false;
+  long condensationRefusedStamp_ = -1;  // pattern on which condensation failed
+  std::string condensationNote_;
 };
 
 }  // namespace beamsolid

@@ -7,6 +7,7 @@
 
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "analysis/SystemOptions.h"
 
 namespace beamsolid {
 
@@ -94,8 +95,9 @@ void registerCholmod(Registry& r) {
   for (const char* name : {"Cholmod", "BandSPD", "ProfileSPD", "SProfileSPD", "ParallelProfileSPD", "SparseSYM",
                            "SparseSPD"})
     r.systems.add(name, [name](CommandArgs& args, Domain&) -> std::unique_ptr<LinearSolver> {
-      while (!args.done()) args.restAsStrings();
-      return std::make_unique<CholmodSolver>(name);
+      auto solver = std::make_unique<CholmodSolver>(name);
+      readSystemOptions(args, *solver);
+      return solver;
     });
 }
 }  // namespace

@@ -38,11 +38,18 @@ class LinearSolver {
   // Equation at which the factorization broke down, -1 if unknown.
   int failedEquation() const { return failedEquation_; }
 
+  // Static condensation of the equations only constant-tangent elements
+  // touch (system(..., '-condense', 'auto'|'on'|'off'); see CondensedSolver).
+  enum class Condensation { Auto, On, Off };
+  Condensation condensation() const { return condensation_; }
+  void setCondensation(Condensation c) { condensation_ = c; }
+
  protected:
   int numAnalyze_ = 0;
   int numFactorize_ = 0;
   std::string lastError_;
   int failedEquation_ = -1;
+  Condensation condensation_ = Condensation::Auto;
 
  private:
   std::string requestedName_;

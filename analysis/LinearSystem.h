@@ -34,6 +34,8 @@ class LinearSystem {
   void solve(const Vector& rhs, Vector& out);
   bool isFactored() const { return factored_; }
   void invalidateFactor() { factored_ = false; }
+  // The solver object changed in place (a new one at the same address).
+  void resetSolverState() { analyzed_ = factored_ = false; }
   SparseView view() const;
 
  private:

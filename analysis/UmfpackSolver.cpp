@@ -6,6 +6,7 @@
 
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "analysis/SystemOptions.h"
 
 namespace beamsolid {
 
@@ -80,9 +81,9 @@ void registerUmfpack(Registry& r) {
   for (const char* name : {"UmfPack", "Umfpack", "SparseGeneral", "SparseGEN", "BandGeneral", "BandGen", "BandGEN",
                            "FullGeneral", "Mumps", "SuperLU", "ProfileSPD_General", "Diagonal", "MPIDiagonal"})
     r.systems.add(name, [name](CommandArgs& args, Domain&) -> std::unique_ptr<LinearSolver> {
-      // OpenSees options such as '-piv' or '-lvalueFact' do not apply; they are read and ignored.
-      while (!args.done()) args.restAsStrings();
-      return std::make_unique<UmfpackSolver>(name);
+      auto solver = std::make_unique<UmfpackSolver>(name);
+      readSystemOptions(args, *solver);
+      return solver;
     });
 }
 }  // namespace

@@ -35,6 +35,14 @@ class Interpreter {
   void closeRecorders() { domain_->removeRecorders(); }
   // Why the most recent analyze returned a negative code; empty after one that succeeded.
   const std::string& lastError() const { return lastError_; }
+  // The linear system of the current analysis: what the user asked for, what
+  // runs, and the condensation (see analysis/CondensedSolver.h).
+  struct SolverInfo {
+    std::string system, backend, note;
+    bool condensed = false;
+    int equations = 0, interior = 0, interface = 0, condensations = 0, factorizations = 0, analyses = 0;
+  };
+  SolverInfo solverInfo() const;
 
  private:
   static const std::map<std::string, Command>& commands();

@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "bindings/Interpreter.h"
+#include "analysis/Analysis.h"
+#include "analysis/CondensedSolver.h"
 #include "core/OpenSeesClassName.h"
 #include "core/OpenSeesError.h"
 
@@ -159,6 +161,27 @@ void printVectorJSON(std::ostream& os, const Eigen::Ref<const Vector>& v) {
 }
 }  // namespace
 
+Interpreter::SolverInfo Interpreter::solverInfo() const {
+  SolverInfo info;
+  if (!analysis_) return info;
+  AnalysisModel& model = analysis_->model();
+  const LinearSolver* solver = model.system().solver();
+  if (!solver) return info;
+  info.system = solver->requestedName();
+  info.backend = solver->backend();
+  info.note = model.condensationNote();
+  info.equations = model.numEquations();
+  info.factorizations = solver->numFactorize();
+  info.analyses = solver->numAnalyze();
+  if (const CondensedSolver* c = model.condensedSolver()) {
+    info.condensed = true;
+    info.interior = c->numInterior();
+    info.interface = c->numInterface();
+    info.condensations = c->numCondensations();
+  }
+  return info;
+}
+
 Result Interpreter::printModel(CommandArgs& a) {
   bool json = false;
   std::string file;
@@ -215,6 +238,10 @@ Result Interpreter::printModel(CommandArgs& a) {
     os << "Domain: time " << domain_->currentTime() << ", " << domain_->nodes().size() << " nodes, "
        << domain_->elements().size() << " elements, " << domain_->sps().size() << " single-point and "
        << domain_->mps().size() << " multi-point constraints, " << domain_->patterns().size() << " load patterns\n";
+    const SolverInfo solver = solverInfo();
+    if (!solver.system.empty())
+      os << "System " << solver.system << " (" << solver.backend << "), " << solver.equations << " equations: "
+         << solver.note << '\n';
     for (const auto& [tag, n] : domain_->nodes()) {
       if (!wantNode(tag)) continue;
       os << "Node " << tag << ": ndf " << n->ndf() << ", coordinates " << n->coordinates().transpose()

@@ -81,6 +81,22 @@ PYBIND11_MODULE(_beamsolid, m) {
           py::arg("name"))
       .def("close_recorders", &Interpreter::closeRecorders)
       .def("last_error", &Interpreter::lastError)
+      .def("solver_info",
+           [](const Interpreter& self) {
+             const auto i = self.solverInfo();
+             py::dict d;
+             d["system"] = i.system;
+             d["backend"] = i.backend;
+             d["note"] = i.note;
+             d["condensed"] = i.condensed;
+             d["equations"] = i.equations;
+             d["interior"] = i.interior;
+             d["interface"] = i.interface;
+             d["condensations"] = i.condensations;
+             d["factorizations"] = i.factorizations;
+             d["analyses"] = i.analyses;
+             return d;
+           })
       .def(
           "tangent_check",
           [](Interpreter& self, int eleTag, double h) {

@@ -12,6 +12,7 @@ class CorotTruss : public Truss {
  public:
   using Truss::Truss;
   std::string className() const override { return "corotTruss"; }
+  bool hasConstantTangent() const override { return false; }
 
  protected:
   bool largeDisplacement() const override { return true; }

@@ -37,6 +37,7 @@ class ElasticBeam2d : public Element {
   static std::unique_ptr<Element> build(CommandArgs& args, Domain& domain, int tag, int nodeI, int nodeJ);
 
   std::string className() const override { return "elasticBeamColumn"; }
+  bool hasConstantTangent() const override { return transf_->className() == "Linear"; }
   bool supportsSpace(int ndm) const override { return ndm == 2; }
 
   void update() override { transf_->update(); }

@@ -30,6 +30,7 @@ class ElasticBeam3d : public Element {
   ElasticBeam3d(int tag, int nodeI, int nodeJ, const Properties& properties, std::unique_ptr<CrdTransf> transf);
 
   std::string className() const override { return "elasticBeamColumn"; }
+  bool hasConstantTangent() const override { return transf_->className() == "Linear"; }
 
   void update() override;
   MatrixView tangentStiff() override;

@@ -95,6 +95,9 @@ class Element {
   // Solver needs: a tangent that is unsymmetric, or has zero diagonal
   // entries (Lagrange multipliers), cannot go to an SPD-only solver.
   virtual bool needsGeneralSolver() const { return false; }
+  // True when the tangent never changes (linear material and geometry): the
+  // solver may condense the dofs only such elements touch, once per model.
+  virtual bool hasConstantTangent() const { return false; }
 
   // The node (index into nodes()) at which the element is drawn as a point
   // (VTK_VERTEX) by the PVD recorder, e.g. a node-to-node contact; -1, the

@@ -48,6 +48,11 @@ class FourNodeQuad : public Element {
                const Properties& properties);
 
   std::string className() const override { return "quad"; }
+  bool hasConstantTangent() const override {
+    for (const auto& m : materials_)
+      if (!m->isLinear()) return false;
+    return true;
+  }
   bool supportsSpace(int ndm) const override { return ndm == 2; }
 
   void update() override;

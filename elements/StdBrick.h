@@ -42,6 +42,11 @@ class StdBrick : public Element {
   StdBrick(int tag, const std::array<int, kNodes>& nodeTags, const NDMaterial& material, const Vector3& bodyForce);
 
   std::string className() const override { return "stdBrick"; }
+  bool hasConstantTangent() const override {
+    for (const auto& m : materials_)
+      if (!m->isLinear()) return false;
+    return true;
+  }
 
   void update() override;
   MatrixView tangentStiff() override;

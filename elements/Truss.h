@@ -34,6 +34,7 @@ class Truss : public Element {
         bool consistentMass, bool doRayleigh);
 
   std::string className() const override { return "truss"; }
+  bool hasConstantTangent() const override { return material_->isLinear(); }
   bool supportsSpace(int ndm) const override { return ndm >= 1 && ndm <= 3; }
 
   void update() override;

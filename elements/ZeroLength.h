@@ -32,6 +32,11 @@ class ZeroLength : public Element {
              const std::vector<int>& directions, const Matrix3& localAxes, bool doRayleigh);
 
   std::string className() const override { return "zeroLength"; }
+  bool hasConstantTangent() const override {
+    for (const auto& s : springs_)
+      if (!s.material->isLinear()) return false;
+    return true;
+  }
   bool supportsSpace(int ndm) const override { return ndm >= 1 && ndm <= 3; }
 
   void update() override;

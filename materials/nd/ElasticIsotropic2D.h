@@ -19,6 +19,7 @@ class ElasticIsotropic2D : public NDMaterial {
 
   // OpenSees' class names: ElasticIsotropicPlaneStrain2D, ElasticIsotropicPlaneStress2D.
   std::string className() const override;
+  bool isLinear() const override { return true; }
   // A copy for the same kind ("PlaneStrain" or "PlaneStress"); nullptr otherwise.
   std::unique_ptr<NDMaterial> clone(const std::string& kind) const override;
 

@@ -14,6 +14,7 @@ class ElasticIsotropic3D : public NDMaterial {
   ElasticIsotropic3D(int tag, double E, double nu, double rho);
 
   std::string className() const override { return "ElasticIsotropic3D"; }
+  bool isLinear() const override { return true; }
   // "ThreeDimensional" (a copy), "PlaneStrain" or "PlaneStress" (an
   // ElasticIsotropic2D); nullptr for any other kind.
   std::unique_ptr<NDMaterial> clone(const std::string& kind) const override;

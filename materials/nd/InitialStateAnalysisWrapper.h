@@ -16,6 +16,7 @@ class InitialStateAnalysisWrapper : public NDMaterial {
   InitialStateAnalysisWrapper(int tag, std::unique_ptr<NDMaterial> inner);
 
   std::string className() const override { return "InitialStateAnalysisWrapper"; }
+  bool isLinear() const override { return inner_->isLinear(); }
   std::unique_ptr<NDMaterial> clone(const std::string& kind) const override;
 
   void setTrialStrain(const Eigen::Ref<const Vector>& strain) override;

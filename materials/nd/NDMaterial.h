@@ -30,6 +30,8 @@ class NDMaterial {
   virtual MatrixView tangent() const = 0;
   virtual MatrixView initialTangent() const = 0;
   virtual double density() const { return 0.0; }
+  // True when the tangent is constant (linear elastic).
+  virtual bool isLinear() const { return false; }
 
   virtual void commitState() = 0;
   virtual void revertToLastCommit() = 0;

@@ -12,6 +12,7 @@ class ElasticMaterial : public UniaxialMaterial {
   ElasticMaterial(int tag, double E, double eta, double Eneg);
 
   std::string className() const override { return "Elastic"; }
+  bool isLinear() const override { return E_ == Eneg_; }
   std::unique_ptr<UniaxialMaterial> clone() const override;
 
   void setTrialStrain(double strain, double strainRate = 0.0) override;

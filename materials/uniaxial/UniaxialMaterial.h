@@ -26,6 +26,8 @@ class UniaxialMaterial {
   virtual double initialTangent() const = 0;
   // d stress / d strain rate, for the damping matrix of transient analysis.
   virtual double dampingTangent() const { return 0.0; }
+  // True when the tangent is constant (linear elastic).
+  virtual bool isLinear() const { return false; }
 
   virtual void commitState() = 0;
   virtual void revertToLastCommit() = 0;

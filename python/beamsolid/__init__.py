@@ -13,7 +13,7 @@ from ._beamsolid import OpenSeesError, __version__, command_names, plugin_abi, r
 from .element import Element, register_element  # noqa: E402
 from .model import Model  # noqa: E402
 
-__all__ = ["Element", "Model", "OpenSeesError", "__version__", "blas_info", "cmake_dir", "command_names", "get_include", "last_error",
+__all__ = ["Element", "Model", "OpenSeesError", "__version__", "blas_info", "cmake_dir", "command_names", "get_include", "last_error", "solver_info",
            "plugin_abi", "register_element", "registered_types"]
 
 
@@ -35,3 +35,10 @@ def last_error():
     from .opensees import default_model
 
     return default_model().last_error()
+
+
+def solver_info():
+    """The linear system of the ``beamsolid.opensees`` analysis (see ``Model.solver_info``)."""
+    from .opensees import default_model
+
+    return default_model().solver_info()

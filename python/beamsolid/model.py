@@ -57,6 +57,19 @@ class Model:
         """
         return self._interp.last_error()
 
+    def solver_info(self):
+        """The linear system of the current analysis, as a dict.
+
+        ``system`` (the name asked for), ``backend`` (what runs), ``equations``;
+        ``condensed`` with ``interior`` and ``interface`` equation counts when the
+        equations only constant-tangent elements touch are condensed out, and
+        ``condensations`` (how often that was done), ``factorizations`` and
+        ``analyses`` (symbolic) so far; ``note`` says why or why not. Switch
+        condensation with ``system(name, '-condense', 'auto'|'on'|'off')`` or the
+        environment variable BEAMSOLID_CONDENSE=on|off.
+        """
+        return self._interp.solver_info()
+
     def close(self):
         """Flush and close this model's recorders."""
         self._interp.close_recorders()

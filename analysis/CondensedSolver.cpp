@@ -1,0 +1,267 @@
+#include "analysis/CondensedSolver.h"
+
+#include <cholmod.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/OpenSeesError.h"
+
+extern "C" {
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
+             double* b, const int* ldb, int* info);
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+void dpotrs_(const char* uplo, const int* n, const int* nrhs, const double* a, const int* lda, double* b,
+             const int* ldb, int* info);
+}
+
+namespace beamsolid {
+
+namespace {
+
+// Columns of A_II^-1 A_IB solved at once: a dense block of n_I x kBlock.
+constexpr int kBlock = 64;
+
+cholmod_dense denseView(double* x, int rows, int cols) {
+  cholmod_dense d{};
+  d.nrow = rows;
+  d.ncol = cols;
+  d.nzmax = static_cast<size_t>(rows) * cols;
+  d.d = rows;
+  d.x = x;
+  d.xtype = CHOLMOD_REAL;
+  d.dtype = CHOLMOD_DOUBLE;
+  return d;
+}
+
+}  // namespace
+
+CondensedSolver::CondensedSolver(std::string requestedName, std::string outerBackend, bool spd,
+                                 std::vector<char> interior)
+    : LinearSolver(std::move(requestedName)),
+      outerBackend_(std::move(outerBackend)),
+      spd_(spd),
+      interior_(std::move(interior)),
+      common_(new cholmod_common) {
+  cholmod_start(common_);
+  common_->supernodal = CHOLMOD_SUPERNODAL;
+  common_->print = 0;
+  common_->error_handler = nullptr;
+}
+
+CondensedSolver::~CondensedSolver() {
+  freeFactor();
+  cholmod_finish(common_);
+  delete common_;
+}
+
+void CondensedSolver::freeFactor() {
+  if (factor_) cholmod_free_factor(&factor_, common_);
+  factor_ = nullptr;
+}
+
+void CondensedSolver::analyze(const SparseView& A) {
+  if (static_cast<int>(interior_.size()) != A.n)
+    throw OpenSeesError("system " + requestedName() + ": condensation partition does not match the equations");
+  n_ = A.n;
+  nI_ = nB_ = 0;
+  local_.assign(n_, -1);
+  for (int eq = 0; eq < n_; ++eq) local_[eq] = interior_[eq] ? nI_++ : nB_++;
+
+  iiStart_.assign(nI_ + 1, 0);
+  ibStart_.assign(nB_ + 1, 0);
+  iiRow_.clear(), iiSource_.clear(), ibRow_.clear(), ibSource_.clear();
+  biRow_.clear(), biCol_.clear(), biSource_.clear(), bbDense_.clear(), bbSource_.clear();
+  // Columns are visited in order and the maps are monotone, so each block's
+  // columns come out sorted, as CHOLMOD wants them.
+  for (int col = 0; col < n_; ++col) {
+    const int c = local_[col];
+    for (int p = A.colStart[col]; p < A.colStart[col + 1]; ++p) {
+      const int row = A.rowIndex[p];
+      const int r = local_[row];
+      if (interior_[col]) {
+        if (interior_[row]) {
+          iiRow_.push_back(r);
+          iiSource_.push_back(p);
+        } else {
+          biRow_.push_back(r);
+          biCol_.push_back(c);
+          biSource_.push_back(p);
+        }
+      } else if (interior_[row]) {
+        ibRow_.push_back(r);
+        ibSource_.push_back(p);
+      } else {
+        bbDense_.push_back(r + c * nB_);
+        bbSource_.push_back(p);
+      }
+    }
+    if (interior_[col]) iiStart_[c + 1] = static_cast<int>(iiRow_.size());
+    else ibStart_[c + 1] = static_cast<int>(ibRow_.size());
+  }
+  iiValues_.assign(iiSource_.size(), 0.0);
+  ibValues_.assign(ibSource_.size(), 0.0);
+  biValues_.assign(biSource_.size(), 0.0);
+  condensed_ = false;
+
+  freeFactor();
+  if (nI_ > 0) {
+    cholmod_sparse s{};
+    s.nrow = s.ncol = nI_;
+    s.nzmax = iiRow_.size();
+    s.p = iiStart_.data();
+    s.i = iiRow_.data();
+    s.x = iiValues_.data();
+    s.stype = 1;
+    s.itype = CHOLMOD_INT;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    factor_ = cholmod_analyze(&s, common_);
+    if (!factor_) throw OpenSeesError("system " + requestedName() + ": symbolic analysis of the condensed block failed");
+  }
+  ++numAnalyze_;
+}
+
+bool CondensedSolver::condense() {
+  if (nI_ > 0) {
+    cholmod_sparse s{};
+    s.nrow = s.ncol = nI_;
+    s.nzmax = iiRow_.size();
+    s.p = iiStart_.data();
+    s.i = iiRow_.data();
+    s.x = iiValues_.data();
+    s.stype = 1;
+    s.itype = CHOLMOD_INT;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    cholmod_factorize(&s, factor_, common_);
+    if (common_->status != CHOLMOD_OK) {
+      lastError_ = "the condensed block (equations of constant-tangent elements only) is not positive definite";
+      return false;
+    }
+  }
+  // coupling = A_BI A_II^-1 A_IB, column block by column block of A_IB.
+  coupling_.assign(static_cast<size_t>(nB_) * nB_, 0.0);
+  std::vector<int> columns;
+  for (int c = 0; c < nB_; ++c)
+    if (ibStart_[c + 1] > ibStart_[c]) columns.push_back(c);
+  // A_BI by interior column, for the product with the solved block.
+  std::vector<int> biStart(nI_ + 1, 0), biOrder(biRow_.size());
+  for (int col : biCol_) ++biStart[col + 1];
+  for (int c = 0; c < nI_; ++c) biStart[c + 1] += biStart[c];
+  {
+    std::vector<int> next(biStart.begin(), biStart.end() - 1);
+    for (int k = 0; k < static_cast<int>(biCol_.size()); ++k) biOrder[next[biCol_[k]]++] = k;
+  }
+  std::vector<double> block(static_cast<size_t>(nI_) * kBlock);
+  for (std::size_t first = 0; first < columns.size(); first += kBlock) {
+    const int width = static_cast<int>(std::min<std::size_t>(kBlock, columns.size() - first));
+    std::fill(block.begin(), block.begin() + static_cast<size_t>(nI_) * width, 0.0);
+    for (int t = 0; t < width; ++t) {
+      const int c = columns[first + t];
+      for (int p = ibStart_[c]; p < ibStart_[c + 1]; ++p) block[ibRow_[p] + static_cast<size_t>(t) * nI_] = ibValues_[p];
+    }
+    cholmod_dense rhs = denseView(block.data(), nI_, width);
+    cholmod_dense* y = cholmod_solve(CHOLMOD_A, factor_, &rhs, common_);
+    if (!y) {
+      lastError_ = "solve with the condensed block failed";
+      return false;
+    }
+    const double* Y = static_cast<const double*>(y->x);
+    for (int ci = 0; ci < nI_; ++ci)
+      for (int q = biStart[ci]; q < biStart[ci + 1]; ++q) {
+        const int k = biOrder[q];
+        const double a = biValues_[k];
+        const int r = biRow_[k];
+        for (int t = 0; t < width; ++t)
+          coupling_[r + static_cast<size_t>(columns[first + t]) * nB_] += a * Y[ci + static_cast<size_t>(t) * nI_];
+      }
+    cholmod_free_dense(&y, common_);
+  }
+  condensed_ = true;
+  ++numCondensations_;
+  return true;
+}
+
+bool CondensedSolver::factorize(const SparseView& A) {
+  ++numFactorize_;
+  failedEquation_ = -1;
+  // Redo the condensation only when a constant block changed.
+  bool same = condensed_;
+  auto gather = [&](const std::vector<int>& source, std::vector<double>& values) {
+    for (std::size_t k = 0; k < source.size(); ++k) {
+      const double v = A.values[source[k]];
+      if (v != values[k]) {
+        same = false;
+        values[k] = v;
+      }
+    }
+  };
+  gather(iiSource_, iiValues_);
+  gather(ibSource_, ibValues_);
+  gather(biSource_, biValues_);
+  if (!same && !condense()) return false;
+
+  schur_.resize(coupling_.size());
+  for (std::size_t k = 0; k < schur_.size(); ++k) schur_[k] = -coupling_[k];
+  for (std::size_t k = 0; k < bbSource_.size(); ++k) schur_[bbDense_[k]] += A.values[bbSource_[k]];
+  if (nB_ == 0) return true;
+  int info = 0;
+  if (spd_) {
+    dpotrf_("U", &nB_, schur_.data(), &nB_, &info);
+    if (info != 0) lastError_ = "the matrix is not positive definite";
+  } else {
+    pivots_.resize(nB_);
+    dgetrf_(&nB_, &nB_, schur_.data(), &nB_, pivots_.data(), &info);
+    if (info != 0) lastError_ = "the matrix is singular";
+  }
+  if (info > 0) {
+    // The breakdown is in S: name an interface equation.
+    int seen = 0;
+    for (int eq = 0; eq < n_; ++eq)
+      if (!interior_[eq] && seen++ == info - 1) failedEquation_ = eq;
+  }
+  return info == 0;
+}
+
+void CondensedSolver::solve(const double* b, double* x) {
+  if (n_ == 0) return;
+  work_.assign(static_cast<size_t>(nI_) + nB_, 0.0);
+  double* bI = work_.data();
+  double* bB = work_.data() + nI_;
+  for (int eq = 0; eq < n_; ++eq) (interior_[eq] ? bI : bB)[local_[eq]] = b[eq];
+  std::vector<double> yI(nI_, 0.0);
+  if (nI_ > 0) {
+    cholmod_dense rhs = denseView(bI, nI_, 1);
+    cholmod_dense* y = cholmod_solve(CHOLMOD_A, factor_, &rhs, common_);
+    if (!y) throw OpenSeesError("system " + requestedName() + ": solve with the condensed block failed");
+    std::memcpy(yI.data(), y->x, sizeof(double) * nI_);
+    cholmod_free_dense(&y, common_);
+  }
+  // interface: S xB = bB - A_BI A_II^-1 bI
+  for (std::size_t k = 0; k < biSource_.size(); ++k) bB[biRow_[k]] -= biValues_[k] * yI[biCol_[k]];
+  if (nB_ > 0) {
+    int info = 0, one = 1;
+    if (spd_) dpotrs_("U", &nB_, &one, schur_.data(), &nB_, bB, &nB_, &info);
+    else dgetrs_("N", &nB_, &one, schur_.data(), &nB_, pivots_.data(), bB, &nB_, &info);
+    if (info != 0) throw OpenSeesError("system " + requestedName() + ": interface solve failed");
+  }
+  // interior: A_II xI = bI - A_IB xB
+  for (int c = 0; c < nB_; ++c)
+    for (int p = ibStart_[c]; p < ibStart_[c + 1]; ++p) bI[ibRow_[p]] -= ibValues_[p] * bB[c];
+  if (nI_ > 0) {
+    cholmod_dense rhs = denseView(bI, nI_, 1);
+    cholmod_dense* y = cholmod_solve(CHOLMOD_A, factor_, &rhs, common_);
+    if (!y) throw OpenSeesError("system " + requestedName() + ": solve with the condensed block failed");
+    std::memcpy(bI, y->x, sizeof(double) * nI_);
+    cholmod_free_dense(&y, common_);
+  }
+  for (int eq = 0; eq < n_; ++eq) x[eq] = interior_[eq] ? bI[local_[eq]] : bB[local_[eq]];
+}
+
+}  // namespace beamsolid
