@@ -20,7 +20,8 @@ namespace beamsolid {
 // returning what OpenSeesPy returns (None, int, float, list or str).
 class Interpreter {
  public:
-  using Result = std::variant<std::monostate, long long, double, std::string, std::vector<double>, std::vector<int>>;
+  using Result = std::variant<std::monostate, long long, double, std::string, std::vector<double>, std::vector<int>,
+                              std::map<std::string, std::vector<double>>>;
   using Command = Result (Interpreter::*)(CommandArgs&);
 
   Interpreter();
@@ -93,6 +94,9 @@ class Interpreter {
   Result analyze(CommandArgs&);
   Result wipeAnalysis(CommandArgs&);
   Result eigen(CommandArgs&);
+  Result modalProperties(CommandArgs&);
+  Result printA(CommandArgs&);
+  Result printB(CommandArgs&);
   Result testIter(CommandArgs&);
   Result testNorm(CommandArgs&);
   Result systemSize(CommandArgs&);

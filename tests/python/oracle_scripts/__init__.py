@@ -35,4 +35,5 @@ SCRIPTS = (
     "time_series",
     "ground_motion",
     "dynamics_sdof_mdof",
+    "modal_properties",
 )
