@@ -36,4 +36,5 @@ SCRIPTS = (
     "ground_motion",
     "dynamics_sdof_mdof",
     "modal_properties",
+    "quasi_newton",
 )
