@@ -27,6 +27,7 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"geomTransf", &Interpreter::geomTransf},
       {"element", &Interpreter::element},
       {"block2D", &Interpreter::block2D},
+      {"block3D", &Interpreter::block3D},
       {"timeSeries", &Interpreter::timeSeries},
       {"pattern", &Interpreter::pattern},
       {"groundMotion", &Interpreter::groundMotion},

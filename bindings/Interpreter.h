@@ -58,6 +58,7 @@ class Interpreter {
   Result geomTransf(CommandArgs&);
   Result element(CommandArgs&);
   Result block2D(CommandArgs&);
+  Result block3D(CommandArgs&);
   Result timeSeries(CommandArgs&);
   Result pattern(CommandArgs&);
   Result groundMotion(CommandArgs&);

@@ -37,4 +37,5 @@ SCRIPTS = (
     "dynamics_sdof_mdof",
     "modal_properties",
     "quasi_newton",
+    "block_meshes",
 )
