@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
+#include <numeric>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
@@ -25,27 +27,92 @@ double SeriesMaterial::initialTangent() const {
 }
 
 void SeriesMaterial::setTrialStrain(double strain, double) {
-  // Incremental from the last trial, like a force-based element's state
-  // determination: the misfit a pass leaves is corrected by the next one.
+  if (maxIter_ > 1) {
+    solveSeries(strain);
+    return;
+  }
+  // One pass, incremental from the last trial like a force-based element's
+  // state determination: the misfit it leaves is corrected by the next
+  // trial (OpenSees' default; checked against OpenSeesPy).
   State& t = trial_;
   const double increment = strain - t.strain;
   t.strain = strain;
   t.stress += increment / t.flexibility;
+  for (std::size_t i = 0; i < materials_.size(); ++i) {
+    UniaxialMaterial& m = *materials_[i];
+    t.strains[i] += (t.stress - m.stress()) / m.tangent();
+    m.setTrialStrain(t.strains[i]);
+  }
+  double misfit = 0.0, flexibility = 0.0;
+  for (const OwnedMaterial& m : materials_) {
+    misfit += (t.stress - m->stress()) / m->tangent();
+    flexibility += 1.0 / m->tangent();
+  }
+  t.flexibility = flexibility;
+  t.stress -= misfit / flexibility;
+}
+
+double SeriesMaterial::strainAtStress(std::size_t i, double stress) {
+  // sigma_i(eps) is increasing from the committed state (the materials a
+  // series holds harden or are perfectly plastic): Newton from the last
+  // trial, kept inside a bracket [low, high] that bisection falls back on
+  // whenever a Newton step leaves it or the tangent is not positive.
+  UniaxialMaterial& m = *materials_[i];
+  const double scale = std::max(std::abs(stress), std::abs(m.initialTangent()) * 1e-12) + 1e-300;
+  double e = trial_.strains[i];
+  m.setTrialStrain(e);
+  double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+  double step = std::abs(stress - m.stress()) / std::abs(m.initialTangent()) + 1e-12;
+  int walks = 0;
+  for (int k = 0; k < 200; ++k) {
+    const double f = m.stress() - stress;
+    if (std::abs(f) <= 1e-14 * scale) break;
+    if (f < 0.0) low = std::max(low, e);
+    else high = std::min(high, e);
+    double next = m.tangent() > 0.0 ? e - f / m.tangent() : std::numeric_limits<double>::quiet_NaN();
+    if (!(next > low && next < high)) {
+      if (std::isfinite(low) && std::isfinite(high)) next = 0.5 * (low + high);
+      else {
+        // No bracket yet: walk outward, doubling the step (a plateau below
+        // the stress asked for has no answer: give up after 60 doublings).
+        if (++walks > 60) break;
+        next = f < 0.0 ? e + step : e - step;
+        step *= 2.0;
+      }
+    }
+    if (next == e) break;
+    e = next;
+    m.setTrialStrain(e);
+  }
+  trial_.strains[i] = e;
+  return e;
+}
+
+void SeriesMaterial::solveSeries(double strain) {
+  // The stress every material carries such that their strains add up to the
+  // given one: Newton on sigma with the series flexibility, each material's
+  // strain found at that stress (strainAtStress); at most maxIter passes,
+  // done when the strain misfit is below tol.
+  State& t = trial_;
+  t.strain = strain;
+  double sigma = t.stress + (strain - std::accumulate(t.strains.begin(), t.strains.end(), 0.0)) / t.flexibility;
+  double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
   for (int pass = 0; pass < maxIter_; ++pass) {
+    double total = 0.0, flexibility = 0.0;
     for (std::size_t i = 0; i < materials_.size(); ++i) {
-      UniaxialMaterial& m = *materials_[i];
-      t.strains[i] += (t.stress - m.stress()) / m.tangent();
-      m.setTrialStrain(t.strains[i]);
+      total += strainAtStress(i, sigma);
+      flexibility += 1.0 / materials_[i]->tangent();
     }
-    // Strain misfit: the strain each material lacks to carry the stress.
-    double misfit = 0.0, flexibility = 0.0;
-    for (const OwnedMaterial& m : materials_) {
-      misfit += (t.stress - m->stress()) / m->tangent();
-      flexibility += 1.0 / m->tangent();
-    }
+    t.stress = sigma;
     t.flexibility = flexibility;
-    t.stress -= misfit / flexibility;
+    const double misfit = strain - total;
     if (std::abs(misfit) < tol_) break;
+    if (misfit > 0.0) low = std::max(low, sigma);
+    else high = std::min(high, sigma);
+    double next = flexibility > 0.0 ? sigma + misfit / flexibility : std::numeric_limits<double>::quiet_NaN();
+    if (!(next > low && next < high) && std::isfinite(low) && std::isfinite(high)) next = 0.5 * (low + high);
+    if (!std::isfinite(next) || next == sigma) break;
+    sigma = next;
   }
 }
 

@@ -35,6 +35,11 @@ class SeriesMaterial : public UniaxialMaterial {
   void print(std::ostream& os) const override;
 
  private:
+  // maxIter > 1: the converged series state at `strain`.
+  void solveSeries(double strain);
+  // Sets material i's trial strain so that it carries `stress`; returns it.
+  double strainAtStress(std::size_t i, double stress);
+
   struct State {
     double strain = 0.0, stress = 0.0, flexibility = 0.0;
     std::vector<double> strains;  // of each material
