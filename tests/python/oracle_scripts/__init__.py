@@ -38,4 +38,5 @@ SCRIPTS = (
     "modal_properties",
     "quasi_newton",
     "block_meshes",
+    "system_prints",
 )
