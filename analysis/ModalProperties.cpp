@@ -148,7 +148,7 @@ ModalProperties::ModalProperties(const Domain& domain, const std::vector<double>
         throw OpenSeesError("modalProperties: node " + std::to_string(tag) + " has no eigenvector " +
                             std::to_string(mode + 1) + ": call eigen after the model is complete");
       phi.segment(offset[tag], node->ndf()) = v.col(mode);
-      for (int k = 0; k < ndm_ && k < node->ndf(); ++k) largest = std::max(largest, std::abs(v(k, mode)));
+      for (int k = 0; k < node->ndf(); ++k) largest = std::max(largest, std::abs(v(k, mode)));
     }
     if (unitNormalized && largest > 0.0) phi /= largest;
     const Vector mPhi = mass * phi;

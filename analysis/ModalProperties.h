@@ -17,7 +17,7 @@ class Domain;
 // translation, or a unit rotation about the centre of mass), mode phi gives
 //   Gamma_d = phi' M r_d / (phi' M phi),   Meff_d = (phi' M r_d)^2 / (phi' M phi).
 // The directions are MX (1D); MX, MY, RMZ (2D); MX, MY, MZ, RMX, RMY, RMZ (3D).
-// '-unorm' scales each mode so that its largest translation is 1 in size
+// '-unorm' scales each mode so that its largest component (translation or rotation, as OpenSees) is 1 in size
 // (Gamma changes, Meff does not).
 class ModalProperties {
  public:

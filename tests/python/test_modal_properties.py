@@ -37,7 +37,7 @@ def test_two_mass_chain_closed_form(tmp_path):
     assert d["domainSize"] == [1.0]
     factors, masses = [], []
     for r in ((1 + math.sqrt(5)) / 2, (1 - math.sqrt(5)) / 2):
-        phi = np.array([1.0, r]) / max(1.0, abs(r))  # -unorm: largest translation 1
+        phi = np.array([1.0, r]) / max(1.0, abs(r))  # -unorm: largest component 1
         gm, l = m * phi @ phi, m * phi.sum()
         factors.append(l / gm)
         masses.append(l * l / gm)

@@ -151,4 +151,22 @@ def run(ops):
     ops.eigen("-fullGenLapack", 2)
     d = ops.modalProperties("-return", "-unorm")
     _add(out, "truss.", d, ("MX", "MY", "RMZ"))
+
+    # A small portal (0.3 x 0.15) whose modes rotate the joints more than they
+    # move them: '-unorm' divides by the largest component, a rotation here.
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    for tag, x, y in ((1, 0.0, 0.0), (2, 0.3, 0.0), (3, 0.0, 0.15), (4, 0.3, 0.15)):
+        ops.node(tag, x, y)
+    ops.fix(1, 1, 1, 1)
+    ops.fix(2, 1, 1, 1)
+    ops.mass(3, 10.0, 10.0, 0.001)
+    ops.mass(4, 12.0, 12.0, 0.002)
+    ops.geomTransf("Linear", 1)
+    ops.element("elasticBeamColumn", 1, 1, 3, 0.1, 2e8, 1e-3, 1)
+    ops.element("elasticBeamColumn", 2, 2, 4, 0.1, 2e8, 1e-3, 1)
+    ops.element("elasticBeamColumn", 3, 3, 4, 0.1, 2e8, 2e-3, 1)
+    ops.eigen("-fullGenLapack", 4)
+    d = ops.modalProperties("-return", "-unorm")
+    _add(out, "small portal.", d, ("MX", "MY", "RMZ"))
     return out
