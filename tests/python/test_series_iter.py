@@ -57,3 +57,28 @@ def test_jump_past_yield_and_elastic_unloading(options):
     assert ops.getTangent() == pytest.approx(K_ELASTIC, rel=1e-10)
     ops.setStrain(4.2)
     assert ops.getStress() == pytest.approx(peak - K_ELASTIC * 0.3, rel=1e-10)
+
+
+def test_softening_component_and_residual_plateau():
+    """Elastic + Concrete01 in compression: before the peak the series is the
+    exact root of eps = sigma/E + eps_c(sigma) (Hognestad parabola); past it
+    the softening branch is followed; on the residual plateau the stress is
+    fpcu and the tangent OpenSees' 1e-12 floor, with or without '-iter'."""
+    fpc, e0, fpcu, ecu, E = -4.0, -0.002, -1.0, -0.006, 3000.0
+
+    def strain_before_peak(sigma):
+        return sigma / E + e0 * (1.0 - (1.0 - sigma / fpc) ** 0.5)
+
+    for options in ((), ("-iter", 30, 1e-12)):
+        ops = Model()
+        ops.model("basic", "-ndm", 1, "-ndf", 1)
+        ops.uniaxialMaterial("Elastic", 1, E)
+        ops.uniaxialMaterial("Concrete01", 2, fpc, e0, fpcu, ecu)
+        ops.uniaxialMaterial("Series", 10, 1, 2, *options)
+        ops.testUniaxialMaterial(10)
+        for k in range(1, 31):
+            ops.setStrain(-0.0003 * k)
+            if options and k <= 9:
+                assert strain_before_peak(ops.getStress()) == pytest.approx(-0.0003 * k, rel=1e-10)
+        assert ops.getStress() == pytest.approx(fpcu, rel=1e-12)
+        assert ops.getTangent() == pytest.approx(1e-12, rel=1e-6)
