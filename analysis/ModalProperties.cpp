@@ -96,6 +96,17 @@ ModalProperties::ModalProperties(const Domain& domain, const std::vector<double>
     if (auto it = offset.find(sp.nodeTag); it != offset.end()) freeMask[it->second + sp.dof] = 0.0;
   SparseMatrix freeMass = freeMask.asDiagonal() * mass * freeMask.asDiagonal();
 
+  // Totals and the centre of mass come from masses lumped to the dofs, as
+  // OpenSees lumps them: each row of M summed over the columns of the same
+  // dof (x with x, rz with rz) at every node. A diagonal M is its own lumping.
+  std::vector<int> localDof(size);
+  for (const auto& [tag, node] : domain.nodes())
+    for (int i = 0; i < node->ndf(); ++i) localDof[offset[tag] + i] = i;
+  Vector lumped = Vector::Zero(size);
+  for (int j = 0; j < mass.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(mass, j); it; ++it)
+      if (localDof[it.row()] == localDof[it.col()]) lumped[it.row()] += it.value();
+
   // Translations and where they act: the centre of mass of the free mass.
   auto translation = [&](int k) {
     Vector r = Vector::Zero(size);
@@ -109,8 +120,8 @@ ModalProperties::ModalProperties(const Domain& domain, const std::vector<double>
     Vector at = Vector::Zero(size);
     for (const auto& [tag, node] : domain.nodes())
       if (k < node->ndf()) at[offset[tag] + k] = node->crd()[k];
-    const double m = r.dot(freeMass * r);
-    if (m != 0.0) centre_[k] = r.dot(freeMass * at) / m;
+    const double m = r.dot(freeMask.cwiseProduct(lumped));
+    if (m != 0.0) centre_[k] = at.dot(freeMask.cwiseProduct(lumped)) / m;
   }
   // A unit rotation about global axis `axis` through the centre of mass:
   // translations e_axis x (x - c) and the node's own rotation dof, if any.
@@ -135,8 +146,9 @@ ModalProperties::ModalProperties(const Domain& domain, const std::vector<double>
   if (ndm_ == 3)
     for (int axis = 0; axis < 3; ++axis) rigid.push_back(rotation(axis));
   for (const Vector& r : rigid) {
-    totalMass_.push_back(r.dot(mass * r));
-    freeMass_.push_back(r.dot(freeMass * r));
+    const Vector r2 = r.cwiseProduct(r);
+    totalMass_.push_back(r2.dot(lumped));
+    freeMass_.push_back(r2.dot(freeMask.cwiseProduct(lumped)));
   }
 
   for (int mode = 0; mode < numModes; ++mode) {
@@ -151,7 +163,9 @@ ModalProperties::ModalProperties(const Domain& domain, const std::vector<double>
       for (int k = 0; k < node->ndf(); ++k) largest = std::max(largest, std::abs(v(k, mode)));
     }
     if (unitNormalized && largest > 0.0) phi /= largest;
-    const Vector mPhi = mass * phi;
+    // The free dofs' mass only: the coupling of a consistent mass to the
+    // supports does not take part (as in OpenSees).
+    const Vector mPhi = freeMass * phi;
     const double generalized = phi.dot(mPhi);
     std::vector<double> factor(numDirections), effective(numDirections);
     for (int d = 0; d < numDirections; ++d) {

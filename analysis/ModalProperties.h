@@ -13,9 +13,13 @@ class Domain;
 // direction, as OpenSees' DomainModalProperties reports them.
 //
 // With the model mass M (nodal masses plus element mass matrices, over every
-// node dof) and, for direction d, the rigid-body vector r_d (a unit
-// translation, or a unit rotation about the centre of mass), mode phi gives
-//   Gamma_d = phi' M r_d / (phi' M phi),   Meff_d = (phi' M r_d)^2 / (phi' M phi).
+// node dof), M_f its free rows and columns (no fix/sp) and, for direction d,
+// the rigid-body vector r_d (a unit translation, or a unit rotation about the
+// centre of mass), mode phi gives
+//   Gamma_d = phi' M_f r_d / (phi' M_f phi),   Meff_d = (phi' M_f r_d)^2 / (phi' M_f phi).
+// Total and free masses and the centre of mass use M lumped to the dofs (each
+// row summed over the same dof of every node), as OpenSees does; both
+// choices were found by running OpenSeesPy on a consistent-mass frame.
 // The directions are MX (1D); MX, MY, RMZ (2D); MX, MY, MZ, RMX, RMY, RMZ (3D).
 // '-unorm' scales each mode so that its largest component (translation or rotation, as OpenSees) is 1 in size
 // (Gamma changes, Meff does not).

@@ -1,8 +1,10 @@
 """modalProperties after eigen, as public examples call it: a 2D two-storey
 frame with lumped masses ('-print', '-file', '-unorm', '-return'), a 3D
 two-storey frame whose floors are rigid diaphragms (mass on the master nodes
-and on the columns' top nodes, some of it on a fixed node), a 1D spring chain
-and a 2D truss with ndf 2 (rotational mass from translations only). Mode
+and on the columns' top nodes, some of it on a fixed node), a 1D spring chain,
+a 2D truss with ndf 2 (rotational mass from translations only), a portal
+whose joints rotate more than they move, and a frame with element mass, one
+column consistent (-cMass). Mode
 shapes are defined up to their sign, so each mode's participation factors are
 returned with the sign that makes its largest one positive, and the report
 files with the signs of that section dropped.
@@ -169,4 +171,23 @@ def run(ops):
     ops.eigen("-fullGenLapack", 4)
     d = ops.modalProperties("-return", "-unorm")
     _add(out, "small portal.", d, ("MX", "MY", "RMZ"))
+
+    # Element mass: lumped columns and girder, one column with a consistent
+    # mass (-cMass): totals, centre and participation as OpenSees forms them.
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    for tag, x, y in ((1, 0.0, 0.0), (2, 6.0, 0.0), (3, 0.0, 3.0), (4, 6.0, 3.0)):
+        ops.node(tag, x, y)
+    ops.fix(1, 1, 1, 1)
+    ops.fix(2, 1, 1, 1)
+    ops.mass(3, 10.0, 10.0, 0.0)
+    ops.mass(4, 12.0, 12.0, 0.0)
+    ops.geomTransf("Linear", 1)
+    ops.element("elasticBeamColumn", 1, 1, 3, 0.1, 2e8, 1e-3, 1, "-mass", 2.0)
+    ops.element("elasticBeamColumn", 2, 2, 4, 0.1, 2e8, 1e-3, 1, "-mass", 2.0, "-cMass")
+    ops.element("elasticBeamColumn", 3, 3, 4, 0.1, 2e8, 2e-3, 1, "-mass", 3.0)
+    out["element mass.eigen"] = ops.eigen("-fullGenLapack", 3)
+    d = ops.modalProperties("-return", "-unorm", "-file", "modal_element_mass.txt")
+    _add(out, "element mass.", d, ("MX", "MY", "RMZ"))
+    out["file:modal_element_mass.txt"] = _report("modal_element_mass.txt")
     return out
