@@ -23,6 +23,10 @@ class ConvergenceTest {
   virtual void start(const LinearSystem& system);
   // Called after every update: b holds the new residual, x the increment just applied.
   Result test(const LinearSystem& system);
+  // Whether the state passes the tolerance, without counting an iteration or
+  // recording a norm (the inner iterations of BFGS and Broyden). Never for
+  // FixedNumIter.
+  bool wouldConverge(const LinearSystem& system) { return tolerance_ >= 0.0 && measure(system) <= tolerance_; }
 
   int numIterations() const { return iteration_; }
   // OpenSees' testIter: one past the last iteration when the step failed.

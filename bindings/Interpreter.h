@@ -20,7 +20,8 @@ namespace beamsolid {
 // returning what OpenSeesPy returns (None, int, float, list or str).
 class Interpreter {
  public:
-  using Result = std::variant<std::monostate, long long, double, std::string, std::vector<double>, std::vector<int>>;
+  using Result = std::variant<std::monostate, long long, double, std::string, std::vector<double>, std::vector<int>,
+                              std::map<std::string, std::vector<double>>>;
   using Command = Result (Interpreter::*)(CommandArgs&);
 
   Interpreter();
@@ -65,6 +66,7 @@ class Interpreter {
   Result geomTransf(CommandArgs&);
   Result element(CommandArgs&);
   Result block2D(CommandArgs&);
+  Result block3D(CommandArgs&);
   Result timeSeries(CommandArgs&);
   Result pattern(CommandArgs&);
   Result groundMotion(CommandArgs&);
@@ -101,6 +103,9 @@ class Interpreter {
   Result analyze(CommandArgs&);
   Result wipeAnalysis(CommandArgs&);
   Result eigen(CommandArgs&);
+  Result modalProperties(CommandArgs&);
+  Result printA(CommandArgs&);
+  Result printB(CommandArgs&);
   Result testIter(CommandArgs&);
   Result testNorm(CommandArgs&);
   Result systemSize(CommandArgs&);

@@ -25,6 +25,7 @@ const char* const kResponseList = "disp, vel, accel, incrDisp, reaction, unbalan
 // VTK cell type numbers (vtkCellType.h).
 constexpr std::uint8_t kVtkVertex = 1;
 constexpr std::uint8_t kVtkLine = 3;
+constexpr std::uint8_t kVtkQuad = 9;
 constexpr std::uint8_t kVtkHexahedron = 12;
 
 // Times in the .pvd and the TimeValue field: enough digits that distinct
@@ -133,6 +134,23 @@ Eigen::Matrix<double, 6, 1> gaussPointMean(const Response& r) {
   return mean / static_cast<double>(points);
 }
 
+// The mean of the 3-component (11 22 12) blocks of a quad's per-Gauss-point
+// response, as a 6-component xx yy zz xy yz xz tuple.
+Eigen::Matrix<double, 6, 1> planeMean(const Response& r) {
+  Eigen::Matrix<double, 6, 1> out = Eigen::Matrix<double, 6, 1>::Zero();
+  if (!r) return out;
+  const Vector v = r.value();
+  const Eigen::Index points = v.size() / 3;
+  if (points == 0 || v.size() % 3 != 0) return out;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (Eigen::Index g = 0; g < points; ++g) mean += v.segment<3>(3 * g);
+  mean /= static_cast<double>(points);
+  out[0] = mean[0];
+  out[1] = mean[1];
+  out[3] = mean[2];
+  return out;
+}
+
 // End forces in local axes as 12 values [N Vy Vz T My Mz] at end 1 then end
 // 2, from a 'localForce' response: a beam's 12 values; a truss' ndf values
 // per end; a corotational truss' axial force N alone (-N at end 1, N at end 2,
@@ -189,6 +207,7 @@ PVDRecorder::Spec withContext(PVDRecorder::Spec s) {
 bool PVDRecorder::cellKindOf(const std::string& className, CellKind& kind) {
   static const std::map<std::string, CellKind> kinds = {
       {"stdBrick", CellKind::Solid},
+      {"quad", CellKind::Quad},
       {"elasticBeamColumn", CellKind::Beam},
       {"dispBeamColumn", CellKind::Beam},
       {"forceBeamColumn", CellKind::Beam},
@@ -340,7 +359,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
 
   // Solids first, then lines, then contact vertices, each by element tag
   // (readers such as meshio group consecutive cells of one type).
-  std::vector<Cell> solids, lines, contacts;
+  std::vector<Cell> solids, quads, lines, contacts;
   for (const auto& [tag, element] : domain.elements()) {
     CellKind kind;
     // Classes by name, and any element that says it is a point (vertexNode).
@@ -360,6 +379,13 @@ void PVDRecorder::updateTopology(Domain& domain) {
         cell.vtkType = kVtkHexahedron;
         cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"})};
         solids.push_back(std::move(cell));
+        break;
+      case CellKind::Quad:
+        if (nodes.size() != 4) continue;
+        // quad's nodes run counterclockwise, as VTK_QUAD's.
+        cell.vtkType = kVtkQuad;
+        cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"})};
+        quads.push_back(std::move(cell));
         break;
       case CellKind::Beam:
       case CellKind::Truss:
@@ -383,14 +409,15 @@ void PVDRecorder::updateTopology(Domain& domain) {
       }
     }
   }
-  for (auto* group : {&solids, &lines, &contacts})
+  for (auto* group : {&solids, &quads, &lines, &contacts})
     for (Cell& c : *group) cells_.push_back(std::move(c));
 
   // Points: the nodes the cells use, by tag.
   auto cellNodes = [](const Cell& c) {
     const auto& nodes = c.element->nodes();
     switch (c.kind) {
-      case CellKind::Solid: return std::vector<const Node*>(nodes.begin(), nodes.end());
+      case CellKind::Solid:
+      case CellKind::Quad: return std::vector<const Node*>(nodes.begin(), nodes.end());
       case CellKind::Beam:
       case CellKind::Truss: return std::vector<const Node*>{nodes[0], nodes[1]};
       case CellKind::Contact: return std::vector<const Node*>{nodes[vertexOf(*c.element)]};
@@ -492,14 +519,18 @@ void PVDRecorder::writeGrid(Domain& domain, double time, const std::string& path
   }
   closeArray(out);
   const auto has = [&](CellKind k) { return haveKind_[static_cast<std::size_t>(k)]; };
-  if (has(CellKind::Solid)) {
+  if (has(CellKind::Solid) || has(CellKind::Quad)) {
     // Plain mean over the Gauss points, in OpenSees' component order
-    // xx yy zz xy yz xz (ParaView's order for a symmetric tensor).
+    // xx yy zz xy yz xz (ParaView's order for a symmetric tensor); a quad's
+    // 11 22 12 fill xx yy xy (its out-of-plane components are left 0).
     const Eigen::Matrix<double, 6, 1> zero6 = Eigen::Matrix<double, 6, 1>::Zero();
     for (int which = 0; which < 2; ++which) {
       openArray(out, "Float64", which == 0 ? "stress" : "strain", 6);
-      for (const Cell& c : cells_)
-        appendTuple(out, c.kind == CellKind::Solid ? gaussPointMean(c.responses[which]) : zero6, digits);
+      for (const Cell& c : cells_) {
+        if (c.kind == CellKind::Solid) appendTuple(out, gaussPointMean(c.responses[which]), digits);
+        else if (c.kind == CellKind::Quad) appendTuple(out, planeMean(c.responses[which]), digits);
+        else appendTuple(out, zero6, digits);
+      }
       closeArray(out);
     }
   }

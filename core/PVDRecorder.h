@@ -63,7 +63,7 @@ class PVDRecorder : public Recorder {
   int recordCount() const { return recordCount_; }
 
   // What a written cell is; the cell array 'elementKind'.
-  enum class CellKind : int { Solid = 1, Beam = 2, Truss = 3, Contact = 4 };
+  enum class CellKind : int { Solid = 1, Beam = 2, Truss = 3, Contact = 4, Quad = 5 };
   // How elements of a class are drawn, or false for a class left out.
   static bool cellKindOf(const std::string& className, CellKind& kind);
 
@@ -74,7 +74,7 @@ class PVDRecorder : public Recorder {
     CellKind kind = CellKind::Solid;
     std::uint8_t vtkType = 0;
     std::vector<int> points;  // indices into points_
-    // Solid: stresses, strains; Beam/Truss: localForce; Contact: status,
+    // Solid, Quad: stresses, strains; Beam/Truss: localForce; Contact: status,
     // gap, forcescalar, frictionforce, normal.
     std::vector<Response> responses;
   };
@@ -99,8 +99,8 @@ class PVDRecorder : public Recorder {
   long topologyStamp_ = -1;
   bool anyTopology_ = false;
   std::vector<const Node*> points_;  // ascending node tag
-  std::vector<Cell> cells_;          // solids, lines, contacts; each by element tag
-  std::array<bool, 5> haveKind_{};   // by CellKind
+  std::vector<Cell> cells_;          // solids, quads, lines, contacts; each by element tag
+  std::array<bool, 6> haveKind_{};   // by CellKind
   // incrDisp: each node's displacement at the previous record() call.
   std::map<int, Vector> previousDisp_;
 

@@ -35,6 +35,14 @@ class SeriesMaterial : public UniaxialMaterial {
   void print(std::ostream& os) const override;
 
  private:
+  // maxIter > 1: the converged series state at `strain`; false if none was
+  // found in maxIter passes (a softening component), the state then undefined.
+  bool solveSeries(double strain);
+  // One incremental pass; returns the strain misfit it leaves.
+  double onePass(double strain);
+  // Sets material i's trial strain so that it carries `stress`; returns it.
+  double strainAtStress(std::size_t i, double stress);
+
   struct State {
     double strain = 0.0, stress = 0.0, flexibility = 0.0;
     std::vector<double> strains;  // of each material

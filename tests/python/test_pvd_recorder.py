@@ -337,3 +337,44 @@ def test_bad_pvd_recorder_arguments_name_the_argument(ops, tmp_path, args, messa
             ops.recorder("PVD", *args)
     finally:
         os.chdir(cwd)
+
+
+def test_quads_are_vtk_quads_next_to_lines(ops, tmp_path):
+    """A 2D block2D mesh of quads with a truss and a beam: quads are VTK_QUAD
+    cells (elementKind 5) before the lines; their stress and strain are the
+    means of eleResponse 'stresses'/'strains' over the 4 Gauss points in
+    the xx, yy, xy slots; the quad's node order is kept."""
+    ops.model("basic", "-ndm", 2, "-ndf", 2)
+    ops.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.25)
+    ops.block2D(2, 1, 1, 1, "quad", 1.0, "PlaneStress", 1, 1, 0.0, 0.0, 2, 2.0, 0.0, 3, 2.0, 1.0, 4, 0.0, 1.0)
+    ops.node(7, 3.0, 0.5)
+    ops.uniaxialMaterial("Elastic", 2, 500.0)
+    ops.element("truss", 10, 3, 7, 0.5, 2)
+    ops.element("truss", 11, 6, 7, 0.5, 2)
+    ops.fix(1, 1, 1)
+    ops.fix(4, 1, 1)
+    ops.recorder("PVD", str(tmp_path / "quads"))
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(7, 3.0, -2.0)
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    assert ops.analyze(1) == 0
+    listed = read_collection(str(tmp_path / "quads.pvd"))
+    grid = meshio.read(str(tmp_path / listed[-1][1]))
+    assert [(b.type, len(b.data)) for b in grid.cells] == [("quad", 2), ("line", 2)]
+    tags = grid.point_data["nodeTag"].ravel().tolist()
+    assert tags == [1, 2, 3, 4, 5, 6, 7]
+    for cell, ele in zip(grid.cells[0].data, (1, 2)):
+        assert [tags[i] for i in cell] == ops.eleNodes(ele)
+    data = cell_arrays(grid)
+    assert data["elementKind"].ravel().tolist() == [5, 5, 3, 3]
+    rtol = 1e-9
+    for row, ele in zip(data["stress"][:2], (1, 2)):
+        s = np.array(ops.eleResponse(ele, "stresses")).reshape(4, 3).mean(axis=0)
+        assert np.abs(s).max() > 0.1
+        close(row, [s[0], s[1], 0.0, s[2], 0.0, 0.0], rtol)
+    for row, ele in zip(data["strain"][:2], (1, 2)):
+        e = np.array(ops.eleResponse(ele, "strains")).reshape(4, 3).mean(axis=0)
+        close(row, [e[0], e[1], 0.0, e[2], 0.0, 0.0], rtol)
+    close(data["stress"][2:], np.zeros((2, 6)), rtol)

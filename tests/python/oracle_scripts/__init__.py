@@ -37,4 +37,8 @@ SCRIPTS = (
     "dynamics_sdof_mdof",
     "shear_column",
     "newton_variants",
+    "modal_properties",
+    "quasi_newton",
+    "block_meshes",
+    "system_prints",
 )
