@@ -58,8 +58,14 @@ def _segment_parameter(p, a, b):
     return t, math.dist(p, foot), math.sqrt(length2)
 
 
+def _is_beamsolid(ops):
+    """True for a beamsolid.Model or the beamsolid.opensees module, False for OpenSeesPy."""
+    module = ops.__name__ if isinstance(ops, type(math)) else type(ops).__module__
+    return module.startswith("beamsolid")
+
+
 def pile_interface(ops, pile_nodes, soil_nodes, radius, transf_tag, mat_tag, *, gap_tol=1e-8, force_tol=1e-8,
-                   penalty=None, first_element=None, first_node=None, c_switch=0, chain=True,
+                   penalty=None, first_element=None, first_node=None, c_switch=0, chain=None,
                    bounds_tol=1e-9):
     """One contact element per soil node between a pile and the soil around it.
 
@@ -96,6 +102,8 @@ def pile_interface(ops, pile_nodes, soil_nodes, radius, transf_tag, mat_tag, *, 
         raise ValueError(f"pile_interface: penalty must be positive (or None for Lagrange multipliers), got {penalty}")
     if c_switch not in (0, 1):
         raise ValueError(f"pile_interface: c_switch must be 0 (in contact) or 1 (not), got {c_switch}")
+    if chain is None:  # '-pile' is BeamSolid's: leave it out when the commands are OpenSees' own
+        chain = _is_beamsolid(ops)
     if first_element is None:
         first_element = max(ops.getEleTags(), default=0) + 1
     if first_node is None:
