@@ -35,4 +35,6 @@ SCRIPTS = (
     "time_series",
     "ground_motion",
     "dynamics_sdof_mdof",
+    "damping_regions",
+    "modal_damping",
 )
