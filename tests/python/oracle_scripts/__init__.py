@@ -37,4 +37,5 @@ SCRIPTS = (
     "dynamics_sdof_mdof",
     "damping_regions",
     "modal_damping",
+    "explicit_difference",
 )
