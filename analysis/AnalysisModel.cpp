@@ -154,21 +154,23 @@ void AnalysisModel::formDynamicTangent(Stiffness which, double cK, double cC, do
   system_.zeroA();
   system_.invalidateFactor();
   auto& values = system_.values();
-  const RayleighFactors& r = domain_.rayleigh();
+  const bool damped = domain_.anyRayleigh();
   const auto& elements = map_.elements();
   for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
     Element& el = *elements[e];
+    const RayleighFactors& r = el.rayleighFactors(domain_.rayleigh());
     const Matrix current = Matrix(el.tangentStiff());
     Matrix a = cK * (which == Stiffness::Initial ? Matrix(el.initialStiff()) : current);
-    if (cC != 0.0 && r.any()) a += cC * el.rayleighMatrix(r, current);
+    if (cC != 0.0 && damped && r.any()) a += cC * el.rayleighMatrix(r, current);
     if (cC != 0.0 && el.hasDampingTangent()) a += cC * el.dampingTangent();
     if (cM != 0.0) a += cM * Matrix(el.massMatrix());
     scatterElementMatrix(values, e, a.data());
   }
-  const double nodal = cM + cC * r.alphaM;
-  for (int f = 0; f < map_.numFullDofs() && nodal != 0.0; ++f) {
-    const double m = map_.nodeOfFull(f)->mass()[map_.dofOfFull(f)];
-    if (m == 0.0) continue;
+  for (int f = 0; f < map_.numFullDofs(); ++f) {
+    const Node* node = map_.nodeOfFull(f);
+    const double m = node->mass()[map_.dofOfFull(f)];
+    const double nodal = cM + cC * node->alphaM(domain_.rayleigh().alphaM);
+    if (m == 0.0 || nodal == 0.0) continue;
     for (auto* a = map_.fullTermsBegin(f); a != map_.fullTermsEnd(f); ++a)
       for (auto* b = map_.fullTermsBegin(f); b != map_.fullTermsEnd(f); ++b)
         values[map_.position(a->equation, b->equation)] += nodal * m * a->coefficient * b->coefficient;
@@ -180,10 +182,11 @@ void AnalysisModel::formDynamicTangent(Stiffness which, double cK, double cC, do
 void AnalysisModel::subtractInertiaAndDamping() {
   Vector& b = system_.b();
   const RayleighFactors& r = domain_.rayleigh();
+  const bool damped = domain_.anyRayleigh();
   const auto& elements = map_.elements();
   for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
     Vector force = elements[e]->inertiaForce();
-    if (r.any()) force += elements[e]->rayleighForce(r);
+    if (damped) force += elements[e]->rayleighForce(elements[e]->rayleighFactors(r));
     const int n = map_.elementMaps()[e].numDOF;
     for (int i = 0; i < n; ++i)
       for (auto* t = map_.elementTermsBegin(e, i); t != map_.elementTermsEnd(e, i); ++t)
@@ -194,8 +197,17 @@ void AnalysisModel::subtractInertiaAndDamping() {
     const int d = map_.dofOfFull(f);
     const double m = node->mass()[d];
     if (m == 0.0) continue;
-    const double p = m * (node->trialAccel()[d] + r.alphaM * node->trialVel()[d]);
+    const double p = m * (node->trialAccel()[d] + node->alphaM(r.alphaM) * node->trialVel()[d]);
     for (auto* t = map_.fullTermsBegin(f); t != map_.fullTermsEnd(f); ++t) b[t->equation] -= t->coefficient * p;
+  }
+  if (const ModalDamping* modal = domain_.modalDamping()) {
+    const std::map<int, Vector> forces = modal->forces(domain_);
+    for (int f = 0; f < map_.numFullDofs(); ++f) {
+      auto it = forces.find(map_.nodeOfFull(f)->tag());
+      if (it == forces.end()) continue;
+      const double p = it->second[map_.dofOfFull(f)];
+      for (auto* t = map_.fullTermsBegin(f); t != map_.fullTermsEnd(f); ++t) b[t->equation] -= t->coefficient * p;
+    }
   }
 }
 

@@ -111,6 +111,8 @@ class Interpreter {
   Result systemSize(CommandArgs&);
   Result reactions(CommandArgs&);
   Result rayleigh(CommandArgs&);
+  Result region(CommandArgs&);
+  Result modalDamping(CommandArgs&);
 
   // --- queries (InterpreterQueries.cpp) ---
   Result nodeDisp(CommandArgs&);

@@ -1,6 +1,8 @@
 // Analysis commands of the Interpreter.
 #include <algorithm>
 #include <iostream>
+#include <optional>
+#include <set>
 
 #include "analysis/EigenAnalysis.h"
 #include "bindings/Interpreter.h"
@@ -164,6 +166,7 @@ Result Interpreter::eigen(CommandArgs& a) {
     a.fail("asked for " + std::to_string(numModes) + " eigenvalues but the model has only " +
            std::to_string(model.numEquations()) + " equations");
   eigenvalues_ = EigenAnalysis::solve(model, numModes, dense);
+  domain_->setEigenvalues(eigenvalues_);
   return eigenvalues_;
 }
 
@@ -221,6 +224,101 @@ Result Interpreter::rayleigh(CommandArgs& a) {
   f.betaKcomm = a.nextDouble("betaKcomm");
   a.expectEnd();
   domain_->setRayleigh(f);
+  return {};
+}
+
+// modalDamping(factor) | modalDamping(f1, f2, ...): damping ratios of the
+// modes of the last eigen (see core/ModalDamping.h).
+Result Interpreter::modalDamping(CommandArgs& a) {
+  std::vector<double> factors = a.nextDoubles("damping factor", 1);
+  a.expectEnd();
+  if (domain_->eigenvalues().empty()) a.fail("no eigen analysis: call eigen(n) before modalDamping");
+  const std::size_t modes = domain_->eigenvalues().size();
+  if (factors.size() > modes) {
+    std::cerr << "WARNING modalDamping - more damping factors than modes were specified"
+                 " - ignoring additional damping factors\n";
+    factors.resize(modes);
+  }
+  domain_->setModalDamping(std::make_unique<ModalDamping>(std::move(factors)));
+  return {};
+}
+
+// region(tag, '-ele' | '-eleOnly', *eles, '-eleRange' | '-eleOnlyRange', a, b,
+// '-node' | '-nodeOnly', *nodes, '-nodeRange' | '-nodeOnlyRange', a, b,
+// '-rayleigh', alphaM, betaK, betaKinit, betaKcomm). As OpenSees: a region of
+// elements also holds their nodes (alphaM damps their nodal mass), one of
+// nodes also the elements whose nodes all lie in it; given both, the elements
+// win; ranges skip missing tags; the factors replace the global ones on the
+// region's elements and nodes until the next rayleigh(). Unlike OpenSees, a
+// listed tag that does not exist and a reused region tag are errors.
+Result Interpreter::region(CommandArgs& a) {
+  const int tag = a.nextInt("regTag");
+  std::set<int> eles, nodes;
+  bool eleOnly = false, nodeOnly = false, haveEles = false, haveNodes = false;
+  std::optional<RayleighFactors> factors;
+  auto range = [&](std::set<int>& into, const auto& existing) {
+    const int first = a.nextInt("start tag"), last = a.nextInt("end tag");
+    for (auto it = existing.lower_bound(first); it != existing.end() && it->first <= last; ++it) into.insert(it->first);
+  };
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt == "-ele" || opt == "-eleOnly") {
+      for (int t : a.nextInts("element tags", 1)) {
+        domain_->element(t, "region " + std::to_string(tag));
+        eles.insert(t);
+      }
+      haveEles = true;
+      eleOnly = opt == "-eleOnly";
+    } else if (opt == "-eleRange" || opt == "-eleOnlyRange") {
+      range(eles, domain_->elements());
+      haveEles = true;
+      eleOnly = opt == "-eleOnlyRange";
+    } else if (opt == "-node" || opt == "-nodeOnly") {
+      for (int t : a.nextInts("node tags", 1)) {
+        domain_->node(t, "region " + std::to_string(tag));
+        nodes.insert(t);
+      }
+      haveNodes = true;
+      nodeOnly = opt == "-nodeOnly";
+    } else if (opt == "-nodeRange" || opt == "-nodeOnlyRange") {
+      range(nodes, domain_->nodes());
+      haveNodes = true;
+      nodeOnly = opt == "-nodeOnlyRange";
+    } else if (opt == "-rayleigh") {
+      RayleighFactors f;
+      f.alphaM = a.nextDouble("alphaM");
+      f.betaK = a.nextDouble("betaK");
+      f.betaKinit = a.nextDouble("betaKinit");
+      f.betaKcomm = a.nextDouble("betaKcomm");
+      factors = f;
+    } else {
+      a.fail("unknown option '" + opt +
+             "' (expected -ele, -eleOnly, -eleRange, -eleOnlyRange, -node, -nodeOnly, -nodeRange, "
+             "-nodeOnlyRange or -rayleigh)");
+    }
+  }
+  if (!domain_->addRegionTag(tag)) a.fail("region with tag " + std::to_string(tag) + " already exists");
+  std::vector<Element*> regionEles;
+  std::vector<Node*> regionNodes;
+  if (haveEles) {
+    for (int t : eles) regionEles.push_back(domain_->findElement(t));
+    if (!eleOnly) {
+      std::set<int> held;
+      for (Element* e : regionEles) held.insert(e->nodeTags().begin(), e->nodeTags().end());
+      for (int t : held) regionNodes.push_back(domain_->findNode(t));
+    }
+  } else if (haveNodes) {
+    for (int t : nodes) regionNodes.push_back(domain_->findNode(t));
+    if (!nodeOnly)
+      for (const auto& [t, e] : domain_->elements())
+        if (std::all_of(e->nodeTags().begin(), e->nodeTags().end(), [&](int n) { return nodes.count(n) > 0; }))
+          regionEles.push_back(e.get());
+  }
+  if (factors) {
+    for (Element* e : regionEles) e->setRegionRayleigh(*factors);
+    for (Node* n : regionNodes) n->setRegionAlphaM(factors->alphaM);
+    domain_->noteRegionRayleigh();
+  }
   return {};
 }
 

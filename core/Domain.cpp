@@ -281,6 +281,13 @@ void Domain::flushRecorders() {
   for (auto& [tag, r] : recorders_) r->flush();
 }
 
+void Domain::setRayleigh(const RayleighFactors& f) {
+  rayleigh_ = f;
+  regionRayleigh_ = false;
+  for (auto& [tag, n] : nodes_) n->clearRegionAlphaM();
+  for (auto& [tag, e] : elements_) e->clearRegionRayleigh();
+}
+
 void Domain::applyLoad(double time) {
   currentTime_ = time;
   for (auto& [tag, n] : nodes_) n->zeroUnbalancedLoad();
@@ -296,8 +303,9 @@ void Domain::commit() {
   for (auto& [tag, n] : nodes_) n->commitState();
   for (auto& [tag, e] : elements_) e->commitState();
   // betaKcomm damps with the stiffness of the last converged state.
-  if (rayleigh_.betaKcomm != 0.0)
-    for (auto& [tag, e] : elements_) e->keepCommittedStiffness();
+  if (anyRayleigh())
+    for (auto& [tag, e] : elements_)
+      if (e->rayleighFactors(rayleigh_).betaKcomm != 0.0) e->keepCommittedStiffness();
   committedTime_ = currentTime_;
   record();
 }
@@ -345,12 +353,13 @@ void Domain::calculateReactions(ReactionKind kind) {
     if (forces) n->addReaction(-n->unbalancedLoad());
     const Vector& m = n->mass();
     if (inertia) n->addReaction(m.cwiseProduct(n->trialAccel()));
-    if (rayleigh_.alphaM != 0.0) n->addReaction(rayleigh_.alphaM * m.cwiseProduct(n->trialVel()));
+    if (const double alphaM = n->alphaM(rayleigh_.alphaM); alphaM != 0.0)
+      n->addReaction(alphaM * m.cwiseProduct(n->trialVel()));
   }
   for (auto& [tag, e] : elements_) {
     Vector f = forces ? Vector(e->resistingForce()) : Vector::Zero(e->numDOF());
     if (inertia) f += e->inertiaForce();
-    if (damping) f += e->rayleighForce(rayleigh_);
+    if (damping) f += e->rayleighForce(e->rayleighFactors(rayleigh_));
     int offset = 0;
     for (Node* n : e->nodes()) {
       n->addReaction(f.segment(offset, n->ndf()));

@@ -1,6 +1,7 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -9,6 +10,7 @@
 #include "core/Constraints.h"
 #include "core/LoadPattern.h"
 #include "core/Node.h"
+#include "core/ModalDamping.h"
 #include "core/RayleighFactors.h"
 #include "core/Recorder.h"
 #include "core/TaggedStore.h"
@@ -133,8 +135,21 @@ class Domain {
   // rayleigh(alphaM, betaK, betaKinit, betaKcomm): C = alphaM M + betaK K
   // (current) + betaKinit K(initial) + betaKcomm K(last committed), for every
   // element that does Rayleigh damping and (alphaM only) every nodal mass.
+  // As OpenSees, rayleigh() replaces the factors regions gave (region()).
   const RayleighFactors& rayleigh() const { return rayleigh_; }
-  void setRayleigh(const RayleighFactors& f) { rayleigh_ = f; }
+  void setRayleigh(const RayleighFactors& f);
+  // Whether any element or node may be damped by Rayleigh factors, global or
+  // of a region (so that the all-zero case costs nothing).
+  bool anyRayleigh() const { return rayleigh_.any() || regionRayleigh_; }
+  void noteRegionRayleigh() { regionRayleigh_ = true; }
+  // Eigenvalues of the last eigen analysis (the mode shapes are on the nodes).
+  const std::vector<double>& eigenvalues() const { return eigenvalues_; }
+  void setEigenvalues(std::vector<double> values) { eigenvalues_ = std::move(values); }
+  // modalDamping(...): damping by the modes of the last eigen; null when none.
+  const ModalDamping* modalDamping() const { return modalDamping_.get(); }
+  void setModalDamping(std::unique_ptr<ModalDamping> d) { modalDamping_ = std::move(d); }
+  // Tags of the region() commands so far; false for a tag already used.
+  bool addRegionTag(int tag) { return regionTags_.insert(tag).second; }
 
   // --- state ---------------------------------------------------------------------
   double currentTime() const { return currentTime_; }
@@ -186,6 +201,10 @@ class Domain {
   int nextRecorderTag_ = 0;
   int nextMPTag_ = 0;
   RayleighFactors rayleigh_;
+  bool regionRayleigh_ = false;
+  std::set<int> regionTags_;
+  std::vector<double> eigenvalues_;
+  std::unique_ptr<ModalDamping> modalDamping_;
   double currentTime_ = 0.0;
   double committedTime_ = 0.0;
   long modelStamp_ = 0;

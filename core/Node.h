@@ -52,6 +52,11 @@ class Node {
   // Diagonal lumped mass, one entry per dof.
   const Vector& mass() const { return mass_; }
   void setMass(const Vector& m) { mass_ = m; }
+  // alphaM of a region(..., '-rayleigh', ...) that holds this node; it
+  // replaces the global one until the next rayleigh() clears it.
+  void setRegionAlphaM(double a) { regionAlphaM_ = a; hasRegionAlphaM_ = true; }
+  void clearRegionAlphaM() { hasRegionAlphaM_ = false; }
+  double alphaM(double global) const { return hasRegionAlphaM_ ? regionAlphaM_ : global; }
 
   // Nodal load of the current time, summed over load patterns.
   const Vector& unbalancedLoad() const { return load_; }
@@ -75,6 +80,8 @@ class Node {
   Vector trialVel_, committedVel_;
   Vector trialAccel_, committedAccel_;
   Vector mass_;
+  double regionAlphaM_ = 0.0;
+  bool hasRegionAlphaM_ = false;
   Vector load_;
   Vector reaction_;
   Matrix eigenvectors_;

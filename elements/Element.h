@@ -50,6 +50,13 @@ class Element {
   // Whether the global rayleigh() factors damp this element (OpenSees'
   // -doRayleigh flags of truss and zeroLength; other elements always).
   virtual bool doesRayleighDamping() const { return true; }
+  // Factors of a region(..., '-rayleigh', ...) that holds this element; they
+  // replace the global ones until the next rayleigh() clears them.
+  void setRegionRayleigh(const RayleighFactors& f) { regionRayleigh_ = f; hasRegionRayleigh_ = true; }
+  void clearRegionRayleigh() { hasRegionRayleigh_ = false; }
+  const RayleighFactors& rayleighFactors(const RayleighFactors& global) const {
+    return hasRegionRayleigh_ ? regionRayleigh_ : global;
+  }
   // d force / d nodal velocity of the element's own dashpots (Viscous
   // materials, Elastic eta), added to the damping matrix; none by default.
   virtual bool hasDampingTangent() const { return false; }
@@ -133,6 +140,8 @@ class Element {
   int numDOF_ = 0;
   Matrix zeroMass_;
   Matrix committedStiff_;
+  RayleighFactors regionRayleigh_;
+  bool hasRegionRayleigh_ = false;
 };
 
 }  // namespace beamsolid

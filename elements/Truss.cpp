@@ -100,6 +100,17 @@ MatrixView Truss::initialStiff() {
   return MatrixView(stiffness_.data(), stiffness_.rows(), stiffness_.cols());
 }
 
+Matrix Truss::dampingTangent() {
+  // The strain rate is axis . (v_j - v_i) / L0, so d N / d v_j = A eta / L0 axis.
+  // Formed in the stiffness buffer, which is then restored: a view of the
+  // tangent taken before stays valid.
+  const StiffnessMatrix kept = stiffness_;
+  formStiffness((area_ * material_->dampingTangent() / initialLength_) * (axis_ * axis_.transpose()));
+  Matrix c = stiffness_;
+  stiffness_ = kept;
+  return c;
+}
+
 VectorView Truss::resistingForce() {
   const Vector3 f = axialForce() * axis_;
   force_.setZero();

@@ -64,6 +64,9 @@ class Truss : public Element {
   double elongation() const { return initialLength_ * material_->strain(); }
   bool doRayleigh() const { return doRayleigh_; }
   bool doesRayleighDamping() const override { return doRayleigh_; }
+  // A rate-dependent material (Viscous) damps along the bar's axis.
+  bool hasDampingTangent() const override { return material_->dampingTangent() != 0.0; }
+  Matrix dampingTangent() override;
   const UniaxialMaterial& material() const { return *material_; }
 
  protected:

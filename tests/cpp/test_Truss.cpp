@@ -294,3 +294,44 @@ TEST(Truss, InputErrorsAreClear) {
   EXPECT_NE(area.find("A must be positive"), std::string::npos) << area;
   EXPECT_EQ(d.elements().size(), 0u);
 }
+
+TEST(Truss, ViscousDampingTangentMatchesVelocityDifferences) {
+  // A Viscous bar (C |rate|^0.5 sgn(rate)): d force / d nodal velocity by
+  // central differences of the velocity (h = 1e-7, O(h^2) truncation) against
+  // the damping tangent, for the truss and, turned and stretched, the
+  // corotTruss (whose strain rate is along the current axis). Tolerance 1e-6 relative.
+  for (const char* type : {"truss", "corotTruss"}) {
+    Domain d;
+    addNode(d, 1, 3, 0.0, 0.0, 0.0);
+    addNode(d, 2, 3, 2.0, 1.0, 0.5);
+    addUniaxialMaterial(d, "Viscous", 1, 40.0, 0.5);
+    Element& e = addElement(d, type, 1, 1, 2, 0.3, 1);
+    d.node(2, "test").setTrialDisp(Vector3(0.2, -0.3, 0.1));
+    const Vector v0 = Vector3(0.4, 0.1, -0.2);
+    d.node(2, "test").setTrialVel(v0);
+    e.update();
+    ASSERT_TRUE(e.hasDampingTangent()) << type;
+    const Matrix C = e.dampingTangent();
+    const double h = 1e-7;
+    Matrix fd = Matrix::Zero(6, 6);
+    for (int k = 0; k < 3; ++k) {
+      Vector v = v0;
+      v[k] += h;
+      d.node(2, "test").setTrialVel(v);
+      e.update();
+      const Vector plus = e.resistingForce();
+      v[k] -= 2 * h;
+      d.node(2, "test").setTrialVel(v);
+      e.update();
+      const Vector minus = e.resistingForce();
+      fd.col(3 + k) = (plus - minus) / (2 * h);
+    }
+    EXPECT_LE((C.rightCols(3) - fd.rightCols(3)).cwiseAbs().maxCoeff(), 1e-6 * C.cwiseAbs().maxCoeff()) << type;
+    // The tangent taken before is untouched by forming the damping tangent.
+    d.node(2, "test").setTrialVel(v0);
+    e.update();
+    const Matrix K = e.tangentStiff();
+    e.dampingTangent();
+    EXPECT_EQ((Matrix(e.tangentStiff()) - K).cwiseAbs().maxCoeff(), 0.0) << type;
+  }
+}

@@ -102,6 +102,12 @@ CASES = [
     ("recorder response", "recorder", ("Element", "-file", "/dev/null", "-ele", 1, "noSuch"), ["recorder Element", "noSuch"]),
     ("setParameter none", "setParameter", ("-val", 1.0, "-ele", 1, "friction"), ["setParameter", "no element recognizes parameter 'friction'"]),
     ("updateMaterialStage", "updateMaterialStage", ("-material", 9, "-stage", 1), ["nDMaterial 9 does not exist"]),
+    ("region element", "region", (1, "-ele", 99, "-rayleigh", 0.1, 0.0, 0.0, 0.0), ["region 1: element 99 does not exist"]),
+    ("region node", "region", (1, "-node", 1, 98, "-rayleigh", 0.1, 0.0, 0.0, 0.0), ["region 1: node 98 does not exist"]),
+    ("region option", "region", (1, "-ele", 1, "-damp", 1), ["region", "unknown option '-damp'"]),
+    ("region factors", "region", (1, "-ele", 1, "-rayleigh", 0.1, 0.0), ["region", "betaKinit"]),
+    ("modalDamping none", "modalDamping", (), ["modalDamping", "damping factor"]),
+    ("modalDamping eigen", "modalDamping", (0.05,), ["modalDamping", "call eigen(n) before modalDamping"]),
 ]
 
 
@@ -124,3 +130,10 @@ def test_every_registered_element_type_rejects_an_empty_argument_list(model):
         with pytest.raises(OpenSeesError) as err:
             model.element(kind)
         assert "element " + kind in str(err.value) or "argument" in str(err.value), str(err.value)
+
+
+def test_region_tag_used_twice_is_an_error(model):
+    base(model)
+    model.region(1, "-ele", 1, "-rayleigh", 0.1, 0.0, 0.0, 0.0)
+    with pytest.raises(OpenSeesError, match="region with tag 1 already exists"):
+        model.region(1, "-ele", 2)

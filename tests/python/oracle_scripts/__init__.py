@@ -41,4 +41,7 @@ SCRIPTS = (
     "quasi_newton",
     "block_meshes",
     "system_prints",
+    "damping_regions",
+    "modal_damping",
+    "explicit_difference",
 )
