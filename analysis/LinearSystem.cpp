@@ -2,6 +2,8 @@
 
 #include "analysis/DofMap.h"
 
+#include <chrono>
+
 namespace beamsolid {
 
 void LinearSystem::setPattern(const DofMap& map) {
@@ -22,21 +24,29 @@ SparseView LinearSystem::view() const {
   return SparseView{n_, map_->columnStart().data(), map_->rowIndex().data(), values_.data()};
 }
 
+namespace {
+double seconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+}  // namespace
+
 bool LinearSystem::factor() {
+  const double start = seconds();
   const SparseView A = view();
   if (!analyzed_) {
     solver_->analyze(A);
     analyzed_ = true;
   }
   factored_ = solver_->factorize(A);
+  solverSeconds_ += seconds() - start;
   return factored_;
 }
 
 void LinearSystem::solve() { solve(b_, x_); }
 
 void LinearSystem::solve(const Vector& rhs, Vector& out) {
+  const double start = seconds();
   out.resize(n_);
   solver_->solve(rhs.data(), out.data());
+  solverSeconds_ += seconds() - start;
 }
 
 }  // namespace beamsolid

@@ -37,6 +37,8 @@ class LinearSystem {
   // The solver object changed in place (a new one at the same address).
   void resetSolverState() { analyzed_ = factored_ = false; }
   SparseView view() const;
+  // Wall time spent in factor() and solve() so far (benchmarks: the solver's share).
+  double solverSeconds() const { return solverSeconds_; }
 
  private:
   const DofMap* map_ = nullptr;
@@ -44,6 +46,7 @@ class LinearSystem {
   bool analyzed_ = false;
   bool factored_ = false;
   int n_ = 0;
+  double solverSeconds_ = 0.0;
   std::vector<double> values_;
   Vector b_, x_;
 };

@@ -173,6 +173,7 @@ Interpreter::SolverInfo Interpreter::solverInfo() const {
   info.equations = model.numEquations();
   info.factorizations = solver->numFactorize();
   info.analyses = solver->numAnalyze();
+  info.solverSeconds = model.system().solverSeconds();
   if (const CondensedSolver* c = model.condensedSolver()) {
     info.condensed = true;
     info.interior = c->numInterior();

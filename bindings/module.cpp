@@ -95,6 +95,7 @@ PYBIND11_MODULE(_beamsolid, m) {
              d["condensations"] = i.condensations;
              d["factorizations"] = i.factorizations;
              d["analyses"] = i.analyses;
+             d["solver_seconds"] = i.solverSeconds;
              return d;
            })
       .def(

@@ -64,7 +64,8 @@ class Model:
         ``condensed`` with ``interior`` and ``interface`` equation counts when the
         equations only constant-tangent elements touch are condensed out, and
         ``condensations`` (how often that was done), ``factorizations`` and
-        ``analyses`` (symbolic) so far; ``note`` says why or why not. Switch
+        ``analyses`` (symbolic) so far, ``solver_seconds`` (wall time in factorizations and solves
+        of this analysis); ``note`` says why or why not. Switch
         condensation with ``system(name, '-condense', 'auto'|'on'|'off')`` or the
         environment variable BEAMSOLID_CONDENSE=on|off.
         """
