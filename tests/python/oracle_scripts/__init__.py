@@ -44,4 +44,5 @@ SCRIPTS = (
     "damping_regions",
     "modal_damping",
     "explicit_difference",
+    "earthquake_2d",
 )
