@@ -7,9 +7,15 @@ iteration and the ratio. Writes benchmarks/results/solver_scaling.md and a
 PNG chart. Timings depend on the machine and its load; the BLAS that
 SuiteSparse used is recorded (ldd), as is the kernel OpenBLAS ran and why (beamsolid.blas_info()).
 """
+import os
 import pathlib
 import sys
 import time
+
+# This compares the two sparse factorizations themselves: no condensation of
+# the (all-linear) blocks, which would solve them by CHOLMOD once for either
+# system (benchmarks/condensation.py measures that).
+os.environ["BEAMSOLID_CONDENSE"] = "off"
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "python"))
 import beamsolid  # noqa: E402
