@@ -69,6 +69,7 @@ StdBrick::StdBrick(int tag, const std::array<int, kNodes>& nodeTags, const NDMat
 }
 
 void StdBrick::setDomain(Domain&) {
+  constantTangentValid_ = false;
   for (Node* n : nodes())
     if (n->ndf() != 3)
       throw OpenSeesError(context() + ": node " + std::to_string(n->tag()) + " has " + std::to_string(n->ndf()) +
@@ -154,7 +155,13 @@ void StdBrick::formStiffness(bool initial, Matrix24& K) const {
 }
 
 MatrixView StdBrick::tangentStiff() {
+  // A linear material's tangent never changes: form it once.
+  if (constantTangentValid_) return viewOf(constantTangent_);
   formStiffness(false, stiffness_);
+  if (hasConstantTangent()) {
+    constantTangent_ = stiffness_;
+    constantTangentValid_ = true;
+  }
   return viewOf(stiffness_);
 }
 
@@ -267,17 +274,20 @@ Response StdBrick::setResponse(const std::vector<std::string>& args) {
 }
 
 bool StdBrick::setParameter(const std::vector<std::string>& args, double value) {
+  constantTangentValid_ = false;
   bool accepted = false;
   for (auto& m : materials_) accepted = m->setParameter(args, value) || accepted;
   return accepted;
 }
 
 void StdBrick::updateMaterialStage(int materialTag, int stage) {
+  constantTangentValid_ = false;
   for (auto& m : materials_)
     if (m->tag() == materialTag) m->updateStage(stage);
 }
 
 void StdBrick::initialStateAnalysis(bool on) {
+  constantTangentValid_ = false;
   for (auto& m : materials_) m->initialStateAnalysis(on);
 }
 

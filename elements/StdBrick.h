@@ -104,6 +104,9 @@ class StdBrick : public Element {
 
   Vector24 displacement_ = Vector24::Zero();
   Matrix24 stiffness_ = Matrix24::Zero();
+  // The tangent of a linear material, kept (invalidated by anything that may change it).
+  Matrix24 constantTangent_ = Matrix24::Zero();
+  bool constantTangentValid_ = false;
   Matrix24 mass_ = Matrix24::Zero();
   Vector24 force_ = Vector24::Zero();
 };
