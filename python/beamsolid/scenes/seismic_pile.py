@@ -392,6 +392,76 @@ def run(problem=SeismicPile(), numerics=Numerics(), m=None, out=None, record=Fal
     return r
 
 
+def run_column(problem=SeismicPile(), numerics=Numerics(interface="none"), width=1.0):
+    """The 1D shear column the periodic box reduces to without a pile: one stdBrick per layer
+    (width x width in plan, the box's levels), its four vertical edges tied like the box's sides,
+    run alike (gravity, record, Rayleigh, Newmark). Returns (times, top displacement along x)."""
+    n_z = LEVELS[numerics.level][2]
+    levels = layer_levels(problem, n_z)
+    m = Model()
+    m.model("basic", "-ndm", 3, "-ndf", 3)
+    m.nDMaterial("ElasticIsotropic", SOIL_ELASTIC, problem.soil_E, problem.soil_nu, problem.soil_rho)
+    m.nDMaterial("InitialStateAnalysisWrapper", SOIL, SOIL_ELASTIC, 3)
+    h = 0.5 * width
+    corners = [(-h, -h), (h, -h), (h, h), (-h, h)]  # counterclockwise seen from above
+    coords = {}
+    for k, z in enumerate(levels):
+        for c, (x, y) in enumerate(corners):
+            tag = 1 + 4 * k + c
+            m.node(tag, x, y, z)
+            coords[tag] = (x, y, z)
+    elements = []
+    for k in range(n_z):
+        top, bottom = [1 + 4 * k + c for c in range(4)], [1 + 4 * (k + 1) + c for c in range(4)]
+        m.element("stdBrick", k + 1, *bottom, *top, SOIL, 0.0, 0.0, -problem.gamma)
+        elements.append(k + 1)
+    for c in range(4):
+        m.fix(1 + 4 * n_z + c, 1, 1, 1)
+    periodic_ties(m, coords, h, levels[-1])
+    geostatic_stage(m, soil_elements=elements, gamma=problem.gamma, K0=problem.K0, tol=numerics.tol,
+                    max_iter=numerics.max_iter, check_tol=1e-8, initial_state=True)
+    dt_record, _ = read_record(problem.record)
+    m.timeSeries("Path", TS_MOTION, "-dt", dt_record, "-filePath", problem.record, "-factor", problem.g * problem.scale)
+    m.pattern("UniformExcitation", PAT_MOTION, 1, "-accel", TS_MOTION)
+    m.rayleigh(*problem.rayleigh, 0.0, 0.0)
+    m.constraints("Transformation")
+    m.numberer("RCM")
+    m.system("UmfPack")
+    m.test("NormUnbalance", numerics.tol, numerics.max_iter)
+    m.algorithm("Newton")
+    m.integrator("Newmark", 0.5, 0.25)
+    m.analysis("Transient")
+    times, disp = [0.0], [m.nodeDisp(1, 1)]
+    for k in range(1, int(round(problem.duration / numerics.dt)) + 1):
+        if m.analyze(1, numerics.dt) != 0:
+            raise RuntimeError(f"run_column: step {k} failed")
+        times.append(k * numerics.dt)
+        disp.append(m.nodeDisp(1, 1))
+    m.wipe()
+    return times, disp
+
+
+def lumped_masses(m, elements, rho):
+    """{node: rho * integral of N_a over the element} summed over 8-node bricks, by 2 x 2 x 2 Gauss
+    quadrature (exact for the trilinear shape functions times the Jacobian of a brick)."""
+    g = 1.0 / math.sqrt(3.0)
+    signs = [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1), (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)]
+    masses = {}
+    for e in elements:
+        nodes = m.eleNodes(e)
+        X = np.array([m.nodeCoord(t) for t in nodes])
+        for gp in signs:
+            xi = np.array(gp, dtype=float) * g
+            N = np.array([(1 + s[0] * xi[0]) * (1 + s[1] * xi[1]) * (1 + s[2] * xi[2]) / 8.0 for s in signs])
+            dN = np.array([[s[0] * (1 + s[1] * xi[1]) * (1 + s[2] * xi[2]) / 8.0,
+                            s[1] * (1 + s[0] * xi[0]) * (1 + s[2] * xi[2]) / 8.0,
+                            s[2] * (1 + s[0] * xi[0]) * (1 + s[1] * xi[1]) / 8.0] for s in signs])
+            detJ = abs(np.linalg.det(dN.T @ X))
+            for a, t in enumerate(nodes):
+                masses[t] = masses.get(t, 0.0) + rho * N[a] * detJ
+    return masses
+
+
 # =====================================================================================
 # The scene: python -m beamsolid.scenes seismic_pile --level coarse|medium|fine
 # =====================================================================================

@@ -1,0 +1,129 @@
+"""The seismic pile scene (issue 16): equilibrium, the free field, contact against tied.
+
+Coarse meshes and short windows of the shipped record keep every test to seconds.
+"""
+import math
+import re
+
+import pytest
+
+from beamsolid.scenes import seismic_pile as sp
+
+
+def test_soil_box_alone_moves_like_the_1d_shear_column():
+    # Periodic sides make every soil column of a homogeneous box move alike: the box's surface
+    # motion is the column's of one brick per layer with the same levels, mass per area and
+    # Rayleigh damping (a brick's nodal forces under a stress uniform in plan cancel between plan
+    # neighbours, and the tied sides cancel each other). Equal to round-off and the Newton tolerance.
+    problem = sp.SeismicPile(duration=1.5)
+    numerics = sp.Numerics(level="coarse", interface="none")
+    box = sp.run(problem, numerics)
+    times, column = sp.run_column(problem, numerics)
+    assert box.converged and len(box.surface_disp) == len(column)
+    peak = max(abs(u) for u in column)
+    assert peak > 1e-3  # the motion is not trivial (PGA 0.3 g)
+    worst = max(abs(a - b) for a, b in zip(box.surface_disp, column))
+    assert worst <= 1e-8 * peak, worst / peak
+
+
+@pytest.fixture(scope="module")
+def recorded_equilibrium():
+    """A contact run with the base reactions and the motion of every node after each step."""
+    problem = sp.SeismicPile(duration=1.0, scale=0.1)
+    states = []
+
+    def on_step(model, t):
+        m = model.m
+        if not hasattr(model, "_masses"):
+            masses = sp.lumped_masses(m, model.mesh.elements, problem.soil_rho)
+            half = 0.5 * problem.pile_density * problem.area
+            for e in model.beams:
+                i, j = m.eleNodes(e)
+                length = abs(m.nodeCoord(i, 3) - m.nodeCoord(j, 3))
+                for n in (i, j):
+                    masses[n] = masses.get(n, 0.0) + half * length
+            model._masses = masses
+        fixed = model.base_nodes + [model.pile_nodes[-1]]
+        m.reactions()
+        static = sum(m.nodeReaction(n, 1) for n in fixed)
+        m.reactions("-rayleigh")
+        damping_at_base = sum(m.nodeReaction(n, 1) for n in fixed)
+        ag = model.ground_accel(t)
+        inertia = sum(mass * (m.nodeAccel(n, 1) + ag) for n, mass in model._masses.items())
+        momentum = sum(mass * m.nodeVel(n, 1) for n, mass in model._masses.items())
+        states.append((t, static, damping_at_base, inertia, momentum, model))
+
+    result = sp.run(problem, sp.Numerics(level="coarse", interface="contact"), on_step=on_step)
+    return problem, result, states
+
+
+def test_base_reaction_balances_inertia_and_damping(recorded_equilibrium):
+    # Horizontal equilibrium of the whole model, relative formulation (UniformExcitation):
+    #   R_base = sum_i m_i (a_i + a_g) + alphaM sum_i m_i v_i - R_rayleigh,base.
+    # R_base: reactions() at the fixed base nodes and the pinned tip (they include m a_g of the
+    # base nodes' own mass, which UniformExcitation loads). The mass-proportional damping acts on
+    # the relative velocity of every node, so it is held by the bedrock's frame, not the base;
+    # the stiffness-proportional part C v = betaK K v sums to zero over all dofs (K 1 = 0), so
+    # what the free dofs lose reaches the base: reactions('-rayleigh') there. Masses: the bricks'
+    # lumped rho * int N_a dV (own Gauss quadrature) and half of each pile element's m L.
+    problem, result, states = recorded_equilibrium
+    assert result.converged and len(states) == 100
+    alpha_m, _ = problem.rayleigh
+    total_mass = sum(states[0][5]._masses.values())
+    volume = (2 * problem.half_width) ** 2 * problem.depth - problem.area * problem.depth
+    # The O-grid's pile surface is a polygon: its hole is smaller than the circle.
+    assert total_mass == pytest.approx(problem.soil_rho * volume + problem.pile_density * problem.area
+                                       * problem.depth, rel=2e-3)
+    scale = max(abs(s[3]) for s in states)
+    assert scale > 50.0  # kN: the motion is not trivial (82 kN)
+    worst = max(abs(static + damping - inertia - alpha_m * momentum) for _, static, damping, inertia, momentum, _
+                in states)
+    assert worst <= 1e-6 * scale, worst / scale
+    # The damping terms matter: leaving them out breaks the balance by far more.
+    without = max(abs(static - inertia) for _, static, _, inertia, _, _ in states)
+    assert without > 1e3 * worst
+
+
+def test_contact_and_tied_agree_while_the_interface_stays_closed():
+    # At PGA 0.015 g the geostatic contact forces exceed every dynamic change: no contact opens,
+    # and the Lagrange-multiplier interface is the tied one but for ContactMaterial3D's finite
+    # stick stiffness (1e5 kN/m per node against the rigidLinks): within 2 % at the head and
+    # 6 % on the largest moment.
+    problem = sp.SeismicPile(duration=1.0, scale=0.05)
+    contact = sp.run(problem, sp.Numerics(level="coarse", interface="contact"))
+    tied = sp.run(problem, sp.Numerics(level="coarse", interface="tied"))
+    assert contact.converged and tied.converged
+    assert max(contact.n_open) == 0 and max(contact.max_gap) == 0.0
+    assert contact.peak_head_disp == pytest.approx(tied.peak_head_disp, rel=0.02)
+    assert max(contact.moment_envelope) == pytest.approx(max(tied.moment_envelope), rel=0.06)
+    history = max(abs(a - b) for a, b in zip(contact.head_disp, tied.head_disp))
+    assert history <= 0.05 * tied.peak_head_disp
+
+
+def test_contact_opens_a_gap_at_large_amplitude():
+    # The full record (PGA 0.3 g): the pile lags the soil near the surface and contacts open.
+    problem = sp.SeismicPile(duration=1.1, scale=1.0)
+    r = sp.run(problem, sp.Numerics(level="coarse", interface="contact"))
+    assert r.converged
+    assert max(r.n_open) >= 1
+    assert r.peak_gap > 1e-6
+    small = sp.run(sp.SeismicPile(duration=1.1, scale=0.05), sp.Numerics(level="coarse", interface="contact"))
+    assert max(small.n_open) == 0
+
+
+def test_pvd_holds_displacements_velocities_and_accelerations(tmp_path):
+    problem = sp.SeismicPile(duration=0.1)
+    r = sp.run(problem, sp.Numerics(level="coarse", interface="tied", pvd_dt=0.05), out=tmp_path, record=True)
+    assert r.converged
+    pvd = (tmp_path / "seismic_pile.pvd").read_text()
+    # -dT 0.05: the first commit (t = 0.01), then once 0.05 has passed (0.06); 0.11 is beyond the run.
+    assert [float(t) for t in re.findall(r'timestep="([^"]+)"', pvd)] == pytest.approx([0.01, 0.06])
+    last = (tmp_path / re.findall(r'file="([^"]+)"', pvd)[-1]).read_text()
+    for name in ("displacement", "velocity", "acceleration"):
+        assert f'Name="{name}"' in last
+    # The head's absolute acceleration recorder (-timeSeries: relative + ground) against nodeAccel + a_g.
+    rows = [list(map(float, line.split())) for line in (tmp_path / "head_accel_abs.out").read_text().split("\n")
+            if line.strip()]
+    assert rows[-1][0] == pytest.approx(0.1)
+    assert rows[-1][1] == pytest.approx(r.head_accel[-1], rel=1e-5)  # 6 digits in the file
+    assert math.isfinite(rows[-1][1])
