@@ -15,7 +15,7 @@ def test_soil_box_alone_moves_like_the_1d_shear_column():
     # motion is the column's of one brick per layer with the same levels, mass per area and
     # Rayleigh damping (a brick's nodal forces under a stress uniform in plan cancel between plan
     # neighbours, and the tied sides cancel each other). Equal to round-off and the Newton tolerance.
-    problem = sp.SeismicPile(duration=1.5)
+    problem = sp.SeismicPile(duration=1.5, scale=1.0)
     numerics = sp.Numerics(level="coarse", interface="none")
     box = sp.run(problem, numerics)
     times, column = sp.run_column(problem, numerics)
@@ -112,7 +112,7 @@ def test_contact_opens_a_gap_at_large_amplitude():
 
 
 def test_pvd_holds_displacements_velocities_and_accelerations(tmp_path):
-    problem = sp.SeismicPile(duration=0.1)
+    problem = sp.SeismicPile(duration=0.1, scale=1.0)
     r = sp.run(problem, sp.Numerics(level="coarse", interface="tied", pvd_dt=0.05), out=tmp_path, record=True)
     assert r.converged
     pvd = (tmp_path / "seismic_pile.pvd").read_text()
