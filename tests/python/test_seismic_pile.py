@@ -29,7 +29,7 @@ def test_soil_box_alone_moves_like_the_1d_shear_column():
 @pytest.fixture(scope="module")
 def recorded_equilibrium():
     """A contact run with the base reactions and the motion of every node after each step."""
-    problem = sp.SeismicPile(duration=1.0, scale=0.1)
+    problem = sp.SeismicPile(duration=1.0, scale=0.1, head_mass=5.0)
     states = []
 
     def on_step(model, t):
@@ -42,6 +42,7 @@ def recorded_equilibrium():
                 length = abs(m.nodeCoord(i, 3) - m.nodeCoord(j, 3))
                 for n in (i, j):
                     masses[n] = masses.get(n, 0.0) + half * length
+            masses[model.pile_nodes[0]] += problem.head_mass  # nodal mass (ops.mass)
             model._masses = masses
         fixed = model.base_nodes + [model.pile_nodes[-1]]
         m.reactions()
@@ -65,7 +66,7 @@ def test_base_reaction_balances_inertia_and_damping(recorded_equilibrium):
     # the relative velocity of every node, so it is held by the bedrock's frame, not the base;
     # the stiffness-proportional part C v = betaK K v sums to zero over all dofs (K 1 = 0), so
     # what the free dofs lose reaches the base: reactions('-rayleigh') there. Masses: the bricks'
-    # lumped rho * int N_a dV (own Gauss quadrature) and half of each pile element's m L.
+    # lumped rho * int N_a dV (own Gauss quadrature), half of each pile element's m L, the head mass.
     problem, result, states = recorded_equilibrium
     assert result.converged and len(states) == 100
     alpha_m, _ = problem.rayleigh
@@ -73,7 +74,7 @@ def test_base_reaction_balances_inertia_and_damping(recorded_equilibrium):
     volume = (2 * problem.half_width) ** 2 * problem.depth - problem.area * problem.depth
     # The O-grid's pile surface is a polygon: its hole is smaller than the circle.
     assert total_mass == pytest.approx(problem.soil_rho * volume + problem.pile_density * problem.area
-                                       * problem.depth, rel=2e-3)
+                                       * problem.depth + problem.head_mass, rel=2e-3)
     scale = max(abs(s[3]) for s in states)
     assert scale > 50.0  # kN: the motion is not trivial (82 kN)
     worst = max(abs(static + damping - inertia - alpha_m * momentum) for _, static, damping, inertia, momentum, _
