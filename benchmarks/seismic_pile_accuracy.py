@@ -127,6 +127,7 @@ def main():
 
 def chart(rows, suffix):
     import matplotlib
+    import matplotlib.ticker
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -139,14 +140,17 @@ def chart(rows, suffix):
             pts = [r for r in rows if r["model"] == model and not r["reference"]]
             ax.loglog([r["wall"] for r in pts], [max(r[key], 1e-6) for r in pts], "-", color=f"C{i}", lw=0.8,
                       label=MODELS[model])
-            for r in pts:
-                ax.loglog(r["wall"], max(r[key], 1e-6), markers[r["level"]], color=f"C{i}", ms=6)
+            for r in pts:  # hollow: the run stopped on contact chatter
+                ax.loglog(r["wall"], max(r[key], 1e-6), markers[r["level"]], color=f"C{i}", ms=6,
+                          mfc=f"C{i}" if r["converged"] else "none")
                 ax.annotate(f"{r['dt']:g}", (r["wall"], max(r[key], 1e-6)), fontsize=7, xytext=(3, 3),
                             textcoords="offset points")
         ax.set_xlabel("wall time (s): build + gravity + shaking")
         ax.set_ylabel(label)
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=8, title="markers: o coarse, s medium; labels: dt (s)", title_fontsize=7)
+    axes[1].legend(fontsize=8, title="o coarse, s medium, D fine; hollow: stopped; labels: dt (s)",
+                   title_fontsize=7, loc="center right")
     fig.suptitle("Seismic pile: error against cost (reference: each model's finest run)", fontsize=10)
     fig.tight_layout()
     fig.savefig(RESULTS / f"seismic_pile_accuracy{suffix}.png", dpi=110)
