@@ -128,3 +128,62 @@ def test_pvd_holds_displacements_velocities_and_accelerations(tmp_path):
     assert rows[-1][0] == pytest.approx(0.1)
     assert rows[-1][1] == pytest.approx(r.head_accel[-1], rel=1e-5)  # 6 digits in the file
     assert math.isfinite(rows[-1][1])
+
+
+def test_contact_takes_no_rayleigh_damping_and_recloses_under_it():
+    # A soil node on a spring (zeroLength: no Rayleigh damping by default) pressed onto a fixed pile
+    # segment, pulled off, then slowly pressed again, under rayleigh(alphaM, betaK, 0, 0) with
+    # betaK / dt as in the scene (alphaM damps the node's free vibration so that it comes back
+    # slowly). The contact element gives no damping force (reactions('-rayleigh') at the node holds
+    # alphaM m v only), and the node closes at the first commit after it touches the pile. With
+    # betaK on the multiplier row, lambda + betaK dlambda/dt = 0 under Newmark made a released
+    # node's lambda alternate in sign, decaying by (betaK - dt/2) / (betaK + dt/2) = -0.67 a step,
+    # and the node sank into the pile for some 50 steps before it could close.
+    from beamsolid import Model
+
+    m = Model()
+    m.model("basic", "-ndm", 3, "-ndf", 6)
+    m.node(1, 0.0, 0.0, 0.0)
+    m.node(2, 0.0, 0.0, 2.0)
+    for n in (1, 2):
+        m.fix(n, 1, 1, 1, 1, 1, 1)
+    m.geomTransf("Linear", 1, 1.0, 0.0, 0.0)
+    m.element("elasticBeamColumn", 10, 1, 2, 0.28, 3e7, 1.2e7, 0.0127, 0.0064, 0.0064, 1)
+    m.model("basic", "-ndm", 3, "-ndf", 3)
+    m.node(3, 0.3, 0.0, 1.0, "-mass", 1.0, 1.0, 1.0)
+    m.node(4, 0.3, 0.0, 1.0)
+    m.node(8, 0.3, 0.0, 1.0)
+    m.fix(8, 1, 1, 1)
+    m.uniaxialMaterial("Elastic", 3, 1e3)
+    m.element("zeroLength", 30, 3, 8, "-mat", 3, 3, 3, "-dir", 1, 2, 3)
+    m.nDMaterial("ContactMaterial3D", 1, 0.3, 1e5, 0.0, 0.0)
+    m.element("BeamContact3D", 21, 1, 2, 3, 4, 0.3, 1, 1, 1e-8, 1e-8)
+    # x: pressed (-10 kN) until 0.3 s, pulled (+10) until 0.8 s, back to pressing by 1.6 s; z: a small shear.
+    m.timeSeries("Path", 1, "-time", 0.0, 0.3, 0.31, 0.8, 1.6, 2.5, "-values", -1.0, -1.0, 1.0, 1.0, -1.0, -1.0)
+    m.timeSeries("Trig", 2, 0.0, 2.0, 0.25)
+    m.pattern("Plain", 1, 1)
+    m.load(3, 10.0, 0.0, 0.0)
+    m.pattern("Plain", 2, 2)
+    m.load(3, 0.0, 0.0, 1.0)
+    alpha_m = 40.0
+    m.rayleigh(alpha_m, 1e-3, 0.0, 0.0)
+    m.constraints("Transformation")
+    m.numberer("Plain")
+    m.system("UmfPack")
+    m.test("NormUnbalance", 1e-8, 25)
+    m.algorithm("Newton")
+    m.integrator("Newmark", 0.5, 0.25)
+    m.analysis("Transient")
+    status, damping, speed, gap = [], [], [], []
+    while len(status) < 200 and not (len(status) > 80 and gap[-2] < 0.0):  # one step past the touch
+        assert m.analyze(1, 0.01) == 0
+        status.append(m.eleResponse(21, "status")[0])
+        gap.append(m.eleResponse(21, "gap")[0])
+        m.reactions("-rayleigh")
+        damping.append(max(abs(m.nodeReaction(3, d) - alpha_m * m.nodeVel(3, d)) for d in (1, 3)))
+        speed.append(abs(m.nodeVel(3, 3)))
+    assert max(speed[:30]) > 1e-6  # it sticks elastically while pressed: K_contact v != 0
+    assert max(damping) <= 1e-12
+    assert status[25] != 0.0 and all(s == 0.0 for s in status[40:80])  # pressed, then released
+    assert len(status) < 200 and status[-1] != 0.0  # in contact at the commit after the touch
+    assert gap[-2] > -1e-6  # it touched, it did not sink in
