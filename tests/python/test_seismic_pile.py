@@ -187,3 +187,15 @@ def test_contact_takes_no_rayleigh_damping_and_recloses_under_it():
     assert status[25] != 0.0 and all(s == 0.0 for s in status[40:80])  # pressed, then released
     assert len(status) < 200 and status[-1] != 0.0  # in contact at the commit after the touch
     assert gap[-2] > -1e-6  # it touched, it did not sink in
+
+
+def test_scene_command_line_writes_its_files(tmp_path, capsys):
+    from beamsolid.scenes.__main__ import main
+
+    assert main(["seismic_pile", "--interface", "tied", "--steps", "10", "--head-mass", "5", "--scale", "1",
+                 "--out", str(tmp_path)]) == 0
+    printed = capsys.readouterr().out
+    assert "head mass 5 t" in printed and "x 1, first 3 s, dt = 0.3" in printed
+    for name in ("head_accel_abs.out", "pile_forces.out", "seismic_pile.pvd", "head_response.png",
+                 "moment_envelope.png"):
+        assert (tmp_path / name).stat().st_size > 0

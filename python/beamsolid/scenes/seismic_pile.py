@@ -546,8 +546,8 @@ def scene(level="coarse", out="seismic_pile_output", interface="contact", steps=
     if problem is None:
         problem = SeismicPile(head_mass=head_mass, **({} if scale is None else {"scale": scale}))
     dt = Numerics.dt if steps is None else problem.duration / steps
-    tied = run(problem, Numerics(level=level, interface="tied", dt=dt))
     main = run(problem, Numerics(level=level, interface=interface, dt=dt), out=out, record=True)
+    tied = main if interface == "tied" else run(problem, Numerics(level=level, interface="tied", dt=dt))
     n_theta, n_radial, n_z = LEVELS[level]
     a_m, b_k = problem.rayleigh
     print(f"seismic_pile ({level}: soil box {n_theta} x {n_radial} x {n_z} stdBricks around the pile, {n_z} pile "
@@ -559,12 +559,12 @@ def scene(level="coarse", out="seismic_pile_output", interface="contact", steps=
           f"{dt:g}; Newmark (1/2, 1/4); rayleigh {a_m:.4g} {b_k:.4g} ({100 * problem.damping:g} % at modes 1, 2)")
     print(f"\n{'model':>8s}{'peak u_head mm':>16s}{'peak a_head':>13s}{'max |M| kNm':>13s}{'at z':>7s}"
           f"{'peak gap mm':>13s}{'max open':>10s}{'iters':>7s}{'wall s':>8s}")
-    for r in (tied, main):
+    for r in ((tied, main) if main is not tied else (main,)):
         k = max(range(len(r.moment_envelope)), key=lambda i: r.moment_envelope[i])
         print(f"{r.numerics.interface:>8s}{1e3 * r.peak_head_disp:16.3f}{max(abs(a) for a in r.head_accel):13.3f}"
               f"{r.moment_envelope[k]:13.1f}{r.z[k]:7.2f}{1e3 * r.peak_gap:13.4f}{max(r.n_open):10d}"
               f"{sum(r.iterations):7d}{r.timings['total']:8.1f}")
-    for r in (tied, main):
+    for r in ((tied, main) if main is not tied else (main,)):
         if not r.converged:
             print(f"  {r.numerics.interface}: STOPPED at t = {r.failed_at:.3f} s: {r.stop_reason}")
     files = [out / "head_accel_abs.out", out / "pile_disp.out", out / "pile_forces.out", out / "seismic_pile.pvd"]
