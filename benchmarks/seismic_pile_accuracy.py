@@ -97,8 +97,8 @@ def main():
              f"(n_theta x n_radial x n_z): {level_text}. Reference of each model: its finest run that reached "
              "the end (" + ", ".join(f"{MODELS[k]}: {lv} at dt = {dt:g} s" for k, (lv, dt) in references.items())
              + "); a contact run that stops (an open node sinks into the pile: contact chatter, "
-             "docs/seismic_pile.md) is compared over the part it ran. Errors: peak head displacement, the moment envelope "
-             "(largest difference over the pile / largest moment), the largest gap. Times: whole run; per step "
+             "docs/seismic_pile.md) is compared over the part it ran. Errors: peak head displacement, the moment "
+             "envelope (largest difference over the pile / largest moment), the largest gap. Times: whole run; per step "
              "and per Newton iteration of the shaking stage (the solver's share is not exposed by the "
              "bindings and is not measured here).", "",
              f"![error against wall time](seismic_pile_accuracy{'_quick' if args.quick else ''}.png)", "",

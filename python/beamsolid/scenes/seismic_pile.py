@@ -283,7 +283,7 @@ class SeismicPileModel:
                     if not ((tag == tip and dof <= 3) or (tag == head and dof == 6)):
                         m.remove("sp", tag, dof)
         dt_record, self.record = read_record(p.record)
-        self.dt_record = dt_record
+        self.record_times = np.arange(len(self.record)) * dt_record
         m.timeSeries("Path", TS_MOTION, "-dt", dt_record, "-filePath", p.record, "-factor", p.g * p.scale)
         m.pattern("UniformExcitation", PAT_MOTION, 1, "-accel", TS_MOTION)
         alpha_m, beta_k = p.rayleigh
@@ -298,8 +298,7 @@ class SeismicPileModel:
 
     def ground_accel(self, t):
         """The base acceleration the Path series gives at time t (linear between samples), m/s^2."""
-        times = np.arange(len(self.record)) * self.dt_record
-        return float(np.interp(t, times, self.record, right=0.0)) * self.p.g * self.p.scale
+        return float(np.interp(t, self.record_times, self.record, right=0.0)) * self.p.g * self.p.scale
 
     def add_recorders(self, out):
         out = pathlib.Path(out)
