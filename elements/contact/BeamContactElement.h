@@ -118,6 +118,10 @@ class BeamContactElement : public Element {
   void updateMaterialStage(int materialTag, int stage) override;
   // Multipliers (zero diagonal) and sliding friction (unsymmetric tangent).
   bool needsGeneralSolver() const override { return true; }
+  // No Rayleigh damping: the multiplier rows are constraints, not stiffness. betaK
+  // on them turns a released node's lambda = 0 into lambda + betaK dlambda/dt = 0,
+  // so lambda stays negative and the node never closes again (it sinks into the pile).
+  bool doesRayleighDamping() const override { return false; }
 
   // As OpenSees: force (3), frictionforce (3, on the pile), forcescalar (3),
   // masterforce|primaryforce (6), mastermoment|primarymoment (6),

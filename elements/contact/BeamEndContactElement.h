@@ -66,6 +66,10 @@ class BeamEndContactElement : public Element {
 
   // Rotates the face normal by the step's rotation increment (C1), refreshes
   // the held data (E4, E7) and decides the next step's status.
+  // No Rayleigh damping: the multiplier rows are constraints, not stiffness. betaK
+  // on them turns a released node's lambda = 0 into lambda + betaK dlambda/dt = 0,
+  // so lambda stays negative and the node never closes again (it sinks into the pile).
+  bool doesRayleighDamping() const override { return false; }
   void commitState() override;
   void revertToStart() override;
 

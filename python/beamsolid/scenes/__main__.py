@@ -14,6 +14,7 @@ SCENES = {
     "lateral_pile": ("beamsolid.scenes.lateral_pile", "scene", "a pile in elastic soil pushed laterally at its head"),
     "donut_pullout": ("beamsolid.scenes.donut_cli", "scene", "the donut pullout test (paper's Table 1)"),
     "bridge_bent": ("beamsolid.scenes.bridge_bent", "scene", "piles joined by a cap beam, pushed transversely"),
+    "seismic_pile": ("beamsolid.scenes.seismic_pile", "scene", "a pile in a soil layer shaken at the bedrock"),
 }
 
 
@@ -25,6 +26,8 @@ def main(argv=None):
     parser.add_argument("--adaptive", action="store_true", help="cut the step on failure, grow it back")
     parser.add_argument("--steps", type=int, default=None, help="steps (per quarter cycle when cyclic)")
     parser.add_argument("--interface", choices=("contact", "penalty", "tied"), default=None)
+    parser.add_argument("--head-mass", type=float, default=None, help="seismic_pile: mass at the pile head (t)")
+    parser.add_argument("--scale", type=float, default=None, help="seismic_pile: factor on the record")
     parser.add_argument("--protocol", choices=("monotonic", "cyclic"), default=None)
     parser.add_argument("--cycles", type=int, default=None)
     parser.add_argument("--algorithm", choices=("Newton", "NewtonLineSearch", "KrylovNewton"), default=None)
