@@ -158,9 +158,11 @@ def _write_part(store, params, key, row, results):
     record = {**params, KEY: key, **row, "finished": datetime.datetime.now(datetime.timezone.utc).isoformat()}
     json_columns = []
     for name, value in results.items():
-        if _scalar(value) and not (isinstance(value, float) and not math.isfinite(value)):
+        if _scalar(value):
             record[name] = value
-        else:  # lists, dicts, nan and inf: JSON text, decoded again by read()
+        elif hasattr(value, "item") and getattr(value, "ndim", 1) == 0:  # a numpy scalar
+            record[name] = value.item()
+        else:  # lists, dicts: JSON text, decoded again by read()
             record[name] = json.dumps(value, default=_plain)
             json_columns.append(name)
     table = pa.Table.from_pylist([record])
