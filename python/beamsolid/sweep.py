@@ -107,11 +107,16 @@ def _part_name(key):
 
 # --- the worker side: one point ---------------------------------------------------------------------
 def _call(func, params):
-    """Run func(**params) and return what goes into the point's row (never raises)."""
+    """Run func(**params) and return what goes into the point's row (never raises). func may come
+    as cloudpickle bytes (what run() sends to Dask workers)."""
     t0 = time.perf_counter()
     row = dict(status="ok", returncode=0, error=None)
     results = {}
     try:
+        if isinstance(func, bytes):
+            import cloudpickle
+
+            func = cloudpickle.loads(func)
         out = func(**params)
         if out is None:
             out = {}
@@ -370,9 +375,14 @@ def run(func, points, store, *, scheduler=None, workers=None, serial=False, retr
                               "OPENBLAS_NUM_THREADS=1 (docs/sweeps.md)", RuntimeWarning, stacklevel=2)
             bar.start()
             bar.update(None, final=True)
+            # Dask pickles a task by reference where it can; cloudpickle here honours
+            # register_pickle_by_value (a study file the workers do not have), once for all points.
+            import cloudpickle
+
+            payload = cloudpickle.dumps(func)
             futures = {}
             for params, key in todo:
-                future = client.submit(_call, func, params, pure=False,
+                future = client.submit(_call, payload, params, pure=False,
                                        key=f"{name}-{hashlib.sha1(key.encode()).hexdigest()[:20]}")
                 futures[future] = (params, key)
             try:
