@@ -2,7 +2,10 @@
 
 Runs benchmarks/stability_map.py twice, each time from an empty store: with --serial (every
 cell in one process, one after the other: the loop it had before the sweep) and with
---workers 2; times each whole run (process start to exit: cluster start-up, the runs, tables
+--workers 2. The serial process runs with OPENBLAS_NUM_THREADS=1 like each worker
+(--serial-blas-threads to change it): with 2 BLAS threads the factorizations sum in another
+order and the results differ in the last digits (2e-11 relative in the quick map), so only
+equal BLAS threads can give identical results. Times each whole run (process start to exit: cluster start-up, the runs, tables
 and charts), then compares the two stores point by point (every column but wall, worker and
 finished; nan equals nan) and the two Markdown tables line by line (but the lines with dates
 and timings). The aim on 2 cores: the 2 workers take at most 0.6 of the serial time.
@@ -43,13 +46,15 @@ def table_lines(path):
     return [l for l in path.read_text().splitlines() if not l.startswith(("Run ", "Total wall time"))]
 
 
-def run_map(args, mode, store):
+def run_map(args, mode, store, blas_threads=None):
     cmd = [sys.executable, str(ROOT / "benchmarks" / "stability_map.py"), "--protocol", args.protocol,
            "--store", str(store), "--fresh"] + (["--quick"] if args.quick else []) + mode
     load0 = os.getloadavg()
     t0 = time.perf_counter()
-    done = subprocess.run(cmd, env=dict(os.environ, PYTHONPATH=str(ROOT / "python")), capture_output=True,
-                          text=True)
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "python"))
+    if blas_threads:
+        env["OPENBLAS_NUM_THREADS"] = env["OMP_NUM_THREADS"] = str(blas_threads)
+    done = subprocess.run(cmd, env=env, capture_output=True, text=True)
     wall = time.perf_counter() - t0
     if done.returncode != 0:
         sys.exit(f"sweep_speedup: {' '.join(cmd)} failed:\n{done.stderr[-3000:]}")
@@ -63,10 +68,12 @@ def main():
     ap.add_argument("--protocol", choices=("monotonic", "cyclic"), default="monotonic")
     ap.add_argument("--quick", action="store_true", help="the quick map (a few cells)")
     ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--serial-blas-threads", type=int, default=1,
+                    help="OPENBLAS_NUM_THREADS of the serial run (0: leave the environment's)")
     args = ap.parse_args()
     stores = {m: ROOT / "build" / "sweeps" / f"speedup_{m}_{args.protocol}{'_quick' if args.quick else ''}"
               for m in ("serial", "dask")}
-    serial = run_map(args, ["--serial"], stores["serial"])
+    serial = run_map(args, ["--serial"], stores["serial"], args.serial_blas_threads)
     print(f"serial: {serial['wall']:.1f} s", flush=True)
     dask = run_map(args, ["--workers", str(args.workers)], stores["dask"])
     print(f"{args.workers} workers: {dask['wall']:.1f} s", flush=True)
@@ -93,7 +100,8 @@ def main():
              "empty store, once with `--serial` and once on a local Dask cluster. Wall time: the whole "
              "process (start-up, runs, tables, charts).", "",
              "| run | wall time (s) | load average before -> after (1 min) |", "|---|---|---|",
-             f"| serial loop (`--serial`) | {serial['wall']:.1f} | {serial['load_before'][0]:.2f} -> "
+             f"| serial loop (`--serial`, OPENBLAS_NUM_THREADS={args.serial_blas_threads or 'unset'}) | "
+             f"{serial['wall']:.1f} | {serial['load_before'][0]:.2f} -> "
              f"{serial['load_after'][0]:.2f} |",
              f"| local cluster, {args.workers} workers (`--workers {args.workers}`) | {dask['wall']:.1f} | "
              f"{dask['load_before'][0]:.2f} -> {dask['load_after'][0]:.2f} |", "",
