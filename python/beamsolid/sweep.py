@@ -135,7 +135,7 @@ def _call(func, params):
     except AnalyzeFailed as exc:
         row.update(status="failed", returncode=exc.returncode, error=str(exc))
         results = exc.results
-    except Exception as exc:  # a point that raises is stored with the reason; the sweep goes on
+    except (Exception, SystemExit) as exc:  # a point that raises is stored with the reason; the sweep goes on
         row.update(status="error", returncode=getattr(exc, "returncode", None),
                    error=f"{type(exc).__name__}: {exc}\n{traceback.format_exc()[-ERROR_CHARS:]}")
         results = {}

@@ -68,3 +68,12 @@ def blas(i):
 
     return {"threads": beamsolid.blas_info().threads, "env": os.environ.get("OPENBLAS_NUM_THREADS"),
             "pid": os.getpid()}
+
+
+def crash(i):
+    """Point 2 ends its process at once, as a segmentation fault in a solver would."""
+    import os
+
+    if i == 2:
+        os._exit(3)
+    return {"square": i * i}

@@ -201,3 +201,16 @@ def test_command_line_show_lists_the_points(tmp_path):
                          text=True, env=dict(os.environ, PYTHONPATH=str(ROOT / "python")), check=True).stdout
     assert "2 points: 1 ok, 1 failed, 0 error" in out
     assert "u=0.0025" in out and "failed (code -3)" in out
+
+
+def test_a_point_that_kills_its_worker_is_stored_as_an_error_and_the_others_complete(tmp_path,
+                                                                                    no_leftover_processes):
+    points = sweep.grid(i=[0, 1, 2, 3, 4, 5])
+    s = sweep.run(sp.crash, points, tmp_path, workers=2, progress=False)
+    assert (s.ran, s.ok, s.errors) == (6, 5, 1)
+    rows = sweep.read(tmp_path, points)
+    for p, r in zip(points, rows):
+        if p["i"] == 2:
+            assert r["status"] == "error" and "KilledWorker" in r["error"]
+        else:
+            assert r["status"] == "ok" and r["square"] == p["i"] ** 2
