@@ -134,7 +134,7 @@ def main():
                         serial=args.serial, name="accuracy_vs_cost")
     runner = ("serially in one process (--serial)" if args.serial else
               f"on the Dask scheduler {args.scheduler}" if args.scheduler else
-              f"on a local Dask cluster of {args.workers or os.cpu_count()} worker processes")
+              f"on a local Dask cluster of {args.workers or os.cpu_count()} worker processes, one BLAS thread each")
     print(f"{summary.points} runs, {summary.skipped} already stored, {summary.ran} run in {summary.wall:.1f} s "
           f"{runner}", flush=True)
     stored = {(p["model"], p["level"]): row for p, row in zip(points, sweep.read(args.store, points))}

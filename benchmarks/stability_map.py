@@ -357,7 +357,7 @@ def main():
             lines.append("")
     runner = ("serially in one process (--serial)" if args.serial else
               f"on the Dask scheduler {args.scheduler}" if args.scheduler else
-              f"on a local Dask cluster of {args.workers or os.cpu_count()} worker processes")
+              f"on a local Dask cluster of {args.workers or os.cpu_count()} worker processes, one BLAS thread each")
     lines += [f"Total wall time {time.perf_counter() - started:.0f} s ({swept:.0f} s for the runs, {runner}; "
               f"store `{args.store}`).", ""] + machine.blas_report()
     RESULTS.mkdir(parents=True, exist_ok=True)

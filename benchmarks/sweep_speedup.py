@@ -42,24 +42,28 @@ def same(a, b):
 
 
 def table_lines(path):
-    """The Markdown without the lines that carry a date or a timing."""
-    return [l for l in path.read_text().splitlines() if not l.startswith(("Run ", "Total wall time"))]
+    """The Markdown without the lines that carry a date or a timing, and without the machine section
+    (it reports the BLAS threads of the process that wrote it)."""
+    text = path.read_text().split("## Machine and BLAS")[0]
+    return [l for l in text.splitlines() if not l.startswith(("Run ", "Total wall time"))]
 
 
 def run_map(args, mode, store, blas_threads=None):
     cmd = [sys.executable, str(ROOT / "benchmarks" / "stability_map.py"), "--protocol", args.protocol,
            "--store", str(store), "--fresh"] + (["--quick"] if args.quick else []) + mode
     load0 = os.getloadavg()
+    cpu0 = sum(os.times()[2:4])
     t0 = time.perf_counter()
     env = dict(os.environ, PYTHONPATH=str(ROOT / "python"))
     if blas_threads:
         env["OPENBLAS_NUM_THREADS"] = env["OMP_NUM_THREADS"] = str(blas_threads)
     done = subprocess.run(cmd, env=env, capture_output=True, text=True)
     wall = time.perf_counter() - t0
+    cpu = sum(os.times()[2:4]) - cpu0  # children's user + system time
     if done.returncode != 0:
         sys.exit(f"sweep_speedup: {' '.join(cmd)} failed:\n{done.stderr[-3000:]}")
     md = RESULTS / f"stability_map{'_quick' if args.quick else ''}_{args.protocol}.md"
-    return dict(command=" ".join(cmd[1:]), wall=wall, load_before=load0, load_after=os.getloadavg(),
+    return dict(command=" ".join(cmd[1:]), wall=wall, cpu=cpu, load_before=load0, load_after=os.getloadavg(),
                 table=table_lines(md))
 
 
@@ -105,6 +109,8 @@ def main():
              f"{serial['load_after'][0]:.2f} |",
              f"| local cluster, {args.workers} workers (`--workers {args.workers}`) | {dask['wall']:.1f} | "
              f"{dask['load_before'][0]:.2f} -> {dask['load_after'][0]:.2f} |", "",
+             f"- CPU time of the benchmark's process tree: serial {serial['cpu']:.1f} s, workers {dask['cpu']:.1f} s "
+             "(the load average counts other work on the machine too).",
              f"- Ratio {args.workers} workers / serial: **{ratio:.3f}** (aim on 2 cores: at most 0.6).",
              f"- Runs stored: {len(a)} serial, {len(b)} on the workers; identical point by point (every column "
              f"but wall, worker, finished): **{len(set(a) & set(b)) - len(differ)} of {len(set(a) | set(b))}**.",
