@@ -21,21 +21,31 @@ pile bending moment M_max, wall time (build + gravity stage + push), equations. 
 the finest level of each model against (b)'s finest, with (a)'s gap depth, showing where the
 no-gap models stop being good enough.
 
+Every run goes through beamsolid.sweep (docs/sweeps.md): a local Dask cluster, one worker per core
+(or --workers N, or --scheduler ADDRESS), each run stored in a Parquet folder (--store; a re-run
+skips the runs stored there, --fresh empties it first); --serial runs them one after the other here.
+Runs on workers side by side share the machine's memory bandwidth: for the cleanest timings of
+each model, use --serial (or --workers 1).
+
 Writes benchmarks/results/accuracy_vs_cost.{md,json} and docs/img/accuracy_vs_cost.png,
 docs/img/accuracy_vs_load.png. Timings depend on the machine and its load; the machine and
 the BLAS kernel are recorded at the end of the table.
 
     PYTHONPATH=python python benchmarks/accuracy_vs_cost.py [--quick]
+        [--serial | --workers N | --scheduler ADDRESS] [--store DIR] [--fresh]
 """
 import argparse
 import dataclasses
 import datetime
 import json
+import os
 import pathlib
+import shutil
 import sys
 import time
 
 import machine
+from beamsolid import sweep
 from beamsolid.scenes import lateral_pile_solid as solid
 from beamsolid.scenes import winkler_pile as winkler
 from beamsolid.scenes.lateral_pile import LEVELS, LateralPile, Numerics, run
@@ -91,16 +101,55 @@ def run_model(key, level, problem):
                 gap=[], iterations=1)
 
 
+def model_point(model, level):
+    """The sweep's function: one model at one level on the default LateralPile. A run that does not
+    converge is stored as failed, without results (the scenes do not report the analyze code)."""
+    t0 = time.perf_counter()
+    res = run_model(model, level, LateralPile())
+    if res is None:
+        return dict(returncode=None, error=f"did not converge ({time.perf_counter() - t0:.1f} s)")
+    res.pop("wall")  # the sweep times every run itself (column wall)
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true", help="coarse and medium only (no reference worth the name)")
+    ap.add_argument("--serial", action="store_true", help="run the models here, one after the other (no Dask)")
+    ap.add_argument("--workers", type=int, help="local Dask worker processes (default: one per core)")
+    ap.add_argument("--scheduler", metavar="ADDRESS", help="run on an existing Dask scheduler instead")
+    ap.add_argument("--store", type=pathlib.Path, help="the sweep's Parquet folder (default: "
+                    "build/sweeps/accuracy_vs_cost[_quick]); stored runs are not run again")
+    ap.add_argument("--fresh", action="store_true", help="empty the store first (after a code change)")
     args = ap.parse_args()
+    if args.store is None:
+        args.store = ROOT / "build" / "sweeps" / f"accuracy_vs_cost{'_quick' if args.quick else ''}"
+    if args.fresh and args.store.exists():
+        shutil.rmtree(args.store)
     problem = LateralPile()
     levels = ["coarse", "medium"] if args.quick else ["coarse", "medium", "fine"]
+    # The finest levels first: they take longest, so the workers finish together.
+    points = [dict(model=key, level=level) for level in reversed(levels) for key in MODELS]
+    summary = sweep.run(model_point, points, args.store, scheduler=args.scheduler, workers=args.workers,
+                        serial=args.serial, name="accuracy_vs_cost")
+    runner = ("serially in one process (--serial)" if args.serial else
+              f"on the Dask scheduler {args.scheduler}" if args.scheduler else
+              f"on a local Dask cluster of {args.workers or os.cpu_count()} worker processes, one BLAS thread each")
+    print(f"{summary.points} runs, {summary.skipped} already stored, {summary.ran} run in {summary.wall:.1f} s "
+          f"{runner}", flush=True)
+    stored = {(p["model"], p["level"]): row for p, row in zip(points, sweep.read(args.store, points))}
     runs = {}
     for key in MODELS:
         for level in levels:
-            res = run_model(key, level, problem)
+            row = stored[(key, level)]
+            res = None
+            if row["status"] == "ok":
+                res = {k: row[k] for k in ("u", "M", "equations", "curve", "gap", "iterations")}
+                res["curve"] = [tuple(x) for x in res["curve"]]
+                res["gap"] = [tuple(x) for x in res["gap"]]
+                res["wall"] = row["wall"]
+            elif row["status"] == "error":
+                print(f"{MODELS[key]:45s} {level:7s} raised: {row['error'].splitlines()[0]}", flush=True)
             runs[(key, level)] = res
             if res:
                 print(f"{MODELS[key]:45s} {level:7s} u {res['u'] * 1e3:8.3f} mm  M_max {res['M']:8.1f} kNm  "
@@ -133,7 +182,9 @@ def main():
     curves_json = {f"{k} {lv}": (res["curve"] if res else None) for (k, lv), res in runs.items()}
     lines = ["# Speed against accuracy: the lateral pile", "",
              f"Run {datetime.datetime.now():%Y-%m-%d %H:%M}; command `PYTHONPATH=python python "
-             f"benchmarks/accuracy_vs_cost.py{' --quick' if args.quick else ''}`. Head load H = {H:g} kN "
+             f"benchmarks/accuracy_vs_cost.py{' --quick' if args.quick else ''}"
+             f"{' --serial' if args.serial else ''}{f' --workers {args.workers}' if args.workers else ''}`, "
+             f"runs {runner}. Head load H = {H:g} kN "
              f"in {STEPS} load steps; reference: {reference}: head displacement {u_ref * 1e3:.4f} mm "
              f"(observed order {p_u:.2f}), M_max {M_ref:.1f} kNm (order {p_M:.2f}).", "",
              "![error against wall time](../../docs/img/accuracy_vs_cost.png)", "",

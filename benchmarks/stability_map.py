@@ -21,20 +21,28 @@ step of the steps map, Newton, same mu and protocol (the finest converged answer
 cell that fails is run again with adaptive stepping (cut on failure, grow back)
 to show where that rescues it.
 
+Every run goes through beamsolid.sweep (docs/sweeps.md): a local Dask cluster, one worker per core
+(or --workers N, or --scheduler ADDRESS), each run stored in a Parquet folder (--store; a re-run
+skips the runs stored there, --fresh empties it first); --serial runs them one after the other here.
+
 Writes benchmarks/results/stability_map[_PROTOCOL].{md,json} and docs/img/stability_*.png.
 
     PYTHONPATH=python python benchmarks/stability_map.py [--quick] [--level coarse] [--protocol P]
+        [--serial | --workers N | --scheduler ADDRESS] [--store DIR] [--fresh]
 """
 import argparse
 import dataclasses
 import datetime
 import json
 import math
+import os
 import pathlib
+import shutil
 import sys
 import time
 
 import machine
+from beamsolid import sweep
 from beamsolid.scenes.lateral_pile import LateralPile, Numerics, run
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -49,7 +57,7 @@ ALGORITHMS = ["Newton", "NewtonLineSearch", "KrylovNewton"]
 PROTOCOLS = ["monotonic", "cyclic"]
 STICK_G = [1e2, 1e3, 1e4, 1e5, 1e6]  # ContactMaterial3D stick stiffness G (kN/m per contact node)
 REFERENCE_STEPS = {"monotonic": 100, "cyclic": 100}  # = the finest steps cell (run once, cached)
-_CACHE = {}
+_CACHE = {}  # cell key -> result: filled from the sweep's store
 
 
 def method_label(method):
@@ -72,10 +80,56 @@ def peaks(result):
 
 
 def run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive=False, contact_G=None):
+    """The cell's result: from the sweep's store (see run_cells), or run here if it was not swept."""
     key = (method, steps, mu, algorithm, protocol, level, adaptive, contact_G)
     if key not in _CACHE:
         _CACHE[key] = _run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive, contact_G)
     return dict(_CACHE[key])
+
+
+def cell_point(method, steps, mu, algorithm, protocol, level, adaptive=False, contact_G=None):
+    """A cell as a sweep point: the parameters are columns of the store, so the method is text."""
+    return dict(method="Lagrange" if method == "Lagrange" else repr(float(method)), steps=int(steps), mu=float(mu),
+                algorithm=algorithm, protocol=protocol, level=level, adaptive=bool(adaptive),
+                contact_G=None if contact_G is None else float(contact_G))
+
+
+def _cell_args(point):
+    method = point["method"] if point["method"] == "Lagrange" else float(point["method"])
+    return (method, point["steps"], point["mu"], point["algorithm"], point["protocol"], point["level"],
+            point["adaptive"], point["contact_G"])
+
+
+def cell(method, steps, mu, algorithm, protocol, level, adaptive, contact_G):
+    """The sweep's function: one cell of the maps, on the default LateralPile. A cell that does not
+    converge keeps its results and is stored as failed, with the analyze code and the reason."""
+    point = dict(method=method, steps=steps, mu=mu, algorithm=algorithm, protocol=protocol, level=level,
+                 adaptive=adaptive, contact_G=contact_G)
+    out = _run_cell(LateralPile(), *_cell_args(point))
+    out.pop("wall")  # the sweep times every run itself (column wall)
+    return out
+
+
+def run_cells(points, args, what):
+    """Run the cells (sweep points) through beamsolid.sweep into args.store and load them into _CACHE."""
+    points = list({sweep.point_key(p): p for p in points}.values())
+    summary = sweep.run(cell, points, args.store, scheduler=args.scheduler, workers=args.workers,
+                        serial=args.serial, name=f"stability_map {what}")
+    print(f"{what}: {summary.points} cells, {summary.skipped} already stored, {summary.ran} run "
+          f"({summary.failed} did not converge, {summary.errors} raised) in {summary.wall:.1f} s", flush=True)
+    for point, row in zip(points, sweep.read(args.store, points)):
+        result = {k: row.get(k) for k in ("converged", "iterations", "penetration", "overlap", "peaks", "steps_cut",
+                                          "reached")}
+        result["peaks"] = [tuple(p) for p in result["peaks"] or []]
+        result["converged"] = bool(result["converged"])
+        result["steps_cut"] = result["steps_cut"] or 0
+        result["reached"] = result["reached"] or 0.0
+        result.update(wall=row["wall"], error=row["error"] if row["status"] != "ok" else None,
+                      returncode=row["returncode"])
+        if row["status"] == "error":  # the function raised outside the lateral pile run (e.g. a lost worker)
+            result.update(converged=False, iterations=None, penetration=None, overlap=None)
+        _CACHE[_cell_args(point)] = result
+    return summary
 
 
 def _run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive, contact_G):
@@ -89,13 +143,14 @@ def _run_cell(problem, method, steps, mu, algorithm, protocol, level, adaptive, 
     wall = time.perf_counter() - t0
     if r is None:
         return dict(converged=False, iterations=None, penetration=None, overlap=None, peaks=[], wall=wall,
-                    error=error, steps_cut=0, reached=0.0)
+                    error=error, steps_cut=0, reached=0.0, returncode=None)
     n_steps = max(1, len(r.iterations))
     return dict(converged=bool(r.converged), iterations=sum(r.iterations) / n_steps,
                 penetration=max(r.max_penetration, default=0.0) / p.head_disp,
                 overlap=max(r.max_open_overlap, default=0.0) / p.head_disp,
-                peaks=peaks(r), wall=wall, error=None, steps_cut=getattr(r, "steps_cut", 0),
-                reached=len(r.head_disp))
+                peaks=peaks(r), wall=wall, steps_cut=getattr(r, "steps_cut", 0), reached=len(r.head_disp),
+                returncode=r.returncode,
+                error=None if r.converged else f"stopped at protocol time {r.failed_at}: {r.error}")
 
 
 def peak_error(cell, reference):
@@ -194,11 +249,42 @@ def main():
     ap.add_argument("--protocol", choices=("monotonic", "cyclic", "both"), default="both",
                     help="one protocol per process lets two cores run the two halves side by side")
     ap.add_argument("--replot", action="store_true", help="redraw the heatmaps from the JSON results only")
+    ap.add_argument("--serial", action="store_true", help="run the cells here, one after the other (no Dask)")
+    ap.add_argument("--workers", type=int, help="local Dask worker processes (default: one per core)")
+    ap.add_argument("--scheduler", metavar="ADDRESS", help="run on an existing Dask scheduler instead")
+    ap.add_argument("--store", type=pathlib.Path, help="the sweep's Parquet folder (default: "
+                    "build/sweeps/stability_map[_quick]_LEVEL); stored cells are not run again")
+    ap.add_argument("--fresh", action="store_true", help="empty the store first (after a code change)")
     args = ap.parse_args()
     if args.replot:
         return replot()
+    if args.store is None:
+        args.store = ROOT / "build" / "sweeps" / f"stability_map{'_quick' if args.quick else ''}_{args.level}"
+    if args.fresh and args.store.exists():
+        shutil.rmtree(args.store)
     problem = LateralPile()
+    if problem != LateralPile():
+        raise SystemExit("stability_map: the sweep's cells run the default LateralPile")
     started = time.perf_counter()
+    protocols = PROTOCOLS if args.protocol == "both" else [args.protocol]
+    # The runs, first all cells and references at once, then the adaptive re-runs of the cells that failed.
+    cells_needed = []
+    for protocol in protocols:
+        for mu in sorted({0.5, *(MUS if not args.quick else [0.1, 1.0])}):
+            cells_needed.append(cell_point("Lagrange", REFERENCE_STEPS[protocol] if not args.quick else 20, mu,
+                                           "Newton", protocol, args.level))
+        for name, methods, columns, params in maps(args.quick, protocol):
+            if name == "G" and protocol == "cyclic":
+                continue
+            for m in methods:
+                for c in columns:
+                    kw = params(m, c)
+                    cells_needed.append(cell_point(kw["method"], kw["steps"], kw["mu"], kw["algorithm"], protocol,
+                                                   args.level, contact_G=kw.get("contact_G")))
+    run_cells(cells_needed, args, "cells")
+    rescues = [dict(p, adaptive=True) for p in cells_needed if not _CACHE[_cell_args(p)]["converged"]]
+    run_cells(rescues, args, "adaptive re-runs")
+    swept = time.perf_counter() - started
     results = {"level": args.level, "problem": dataclasses.asdict(problem), "maps": {}}
     lines = ["# Stability map: the lateral pile under monotonic and cyclic head displacement", "",
              f"Run {datetime.datetime.now():%Y-%m-%d %H:%M}, level `{args.level}`, command "
@@ -212,7 +298,7 @@ def main():
              "0 -> +d -> 0 -> -d -> 0. pen: largest penetration of a closed contact / d; ovl: largest "
              "overlap of an open (released) contact with the pile / d, which the one-step status lag leaves "
              "until the next commit.", ""]
-    for protocol in (PROTOCOLS if args.protocol == "both" else [args.protocol]):
+    for protocol in protocols:
         references = {}
         for mu in sorted({0.5, *(MUS if not args.quick else [0.1, 1.0])}):
             ref = run_cell(problem, "Lagrange", REFERENCE_STEPS[protocol] if not args.quick else 20, mu, "Newton",
@@ -269,7 +355,11 @@ def main():
                                                   else "; adaptive fails too"))
                 lines.append(f"| {method_label(m)} | " + " | ".join(row) + " |")
             lines.append("")
-    lines += [f"Total wall time {time.perf_counter() - started:.0f} s.", ""] + machine.blas_report()
+    runner = ("serially in one process (--serial)" if args.serial else
+              f"on the Dask scheduler {args.scheduler}" if args.scheduler else
+              f"on a local Dask cluster of {args.workers or os.cpu_count()} worker processes, one BLAS thread each")
+    lines += [f"Total wall time {time.perf_counter() - started:.0f} s ({swept:.0f} s for the runs, {runner}; "
+              f"store `{args.store}`).", ""] + machine.blas_report()
     RESULTS.mkdir(parents=True, exist_ok=True)
     suffix = ("_quick" if args.quick else "") + ("" if args.protocol == "both" else "_" + args.protocol)
     (RESULTS / f"stability_map{suffix}.md").write_text("\n".join(lines) + "\n")

@@ -36,6 +36,8 @@ class StepperResult:
     iterations: list = field(default_factory=list)  # per converged step
     increments: list = field(default_factory=list)  # per converged step
     failed_at: float = None  # progress of the state the run stopped in (None if converged)
+    returncode: int = 0  # the code of the analyze(1) that ended a failed run
+    error: str = ""  # and its reason (the model's last_error(), when it has one)
 
 
 def _default_integrator(d):
@@ -74,7 +76,8 @@ def adaptive_analyze(m, total, steps, *, integrator=_default_integrator, adaptiv
         if h_try != issued:
             m.integrator(*integrator(h_try))
             issued = h_try
-        if m.analyze(1) == 0:
+        code = m.analyze(1)
+        if code == 0:
             iterations = int(m.testIter())
             r.progress = target if abs(target - (r.progress + h_try)) <= eps else r.progress + h_try
             r.steps += 1
@@ -92,6 +95,9 @@ def adaptive_analyze(m, total, steps, *, integrator=_default_integrator, adaptiv
         easy = 0
         if not adaptive or h_try <= h_min * (1.0 + 1e-12):
             r.failed_at = r.progress
+            r.returncode = int(code)
+            last_error = getattr(m, "last_error", None)
+            r.error = last_error() if callable(last_error) else ""
             return r
         h = max(0.5 * h_try, h_min)
         r.cuts += 1

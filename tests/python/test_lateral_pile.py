@@ -130,8 +130,9 @@ def test_adaptive_steps_get_through_where_one_step_fails():
     n = Numerics(interface="penalty", protocol="cyclic", cycles=1, steps=1)
     fixed = run(numerics=n)
     assert not fixed.converged and fixed.failed_at is not None and fixed.steps_cut == 0
+    assert fixed.returncode < 0 and fixed.error  # the failed analyze's code and its reason
     adaptive = run(numerics=Numerics(**{**n.__dict__, "adaptive": True}))
-    assert adaptive.converged and adaptive.steps_cut >= 1
+    assert adaptive.converged and adaptive.steps_cut >= 1 and adaptive.returncode == 0 and adaptive.error == ""
     assert adaptive.time[-1] == pytest.approx(4.0, abs=1e-12) and adaptive.head_disp[-1] == pytest.approx(0.0, abs=1e-12)
     # Every converged state of the fixed run lies on the adaptive one's path (same times).
     for t, H in zip(fixed.time, fixed.head_force):

@@ -44,6 +44,20 @@ def test_without_adaptive_the_first_failure_ends_the_run():
     r = adaptive_analyze(m, 1.0, 4, adaptive=False)
     assert not r.converged
     assert r.failed_at == pytest.approx(0.5) and r.steps == 2 and r.failures == 1 and r.cuts == 0
+    assert r.returncode == -3 and r.error == ""  # the failed analyze's code; this stand-in keeps no reason
+
+
+def test_a_failed_run_keeps_the_code_and_the_reason_of_the_last_analyze(model):
+    """A bar of ElasticPP (yield force 20) loaded to 40: the step past yield has no stiffness."""
+    _bar(model)
+    model.uniaxialMaterial("ElasticPP", 2, 4000.0, 0.005)
+    model.element("truss", 2, 1, 2, 1.0, 2)
+    model.remove("element", 1)
+    model.integrator("LoadControl", 1.0)
+    model.analysis("Static")
+    r = adaptive_analyze(model, 40.0, 4, adaptive=False)
+    assert not r.converged and r.failed_at == pytest.approx(20.0)
+    assert r.returncode < 0 and r.error == model.last_error() and "singular" in r.error
 
 
 def test_cut_on_failure_and_grow_back_after_easy_steps():

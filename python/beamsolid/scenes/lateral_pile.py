@@ -195,6 +195,8 @@ class LateralResult:
     n_sliding: list = field(default_factory=list)
     converged: bool = False
     failed_at: float = None  # protocol time of the last converged state when the run stopped
+    returncode: int = 0  # the failed analyze's code when the run stopped, and why
+    error: str = ""
     steps_cut: int = 0
     steps_grown: int = 0
     # Final state.
@@ -472,6 +474,7 @@ def run(problem=LateralPile(), numerics=Numerics(), m=None, out=None, record=Fal
     r.n_equations = int(model.m.systemSize())  # the system the push solved
     r.converged = stepper.converged
     r.failed_at = None if stepper.converged else stepper.failed_at
+    r.returncode, r.error = stepper.returncode, stepper.error
     r.steps_cut, r.steps_grown = stepper.cuts, stepper.grows
     model.finish(r)
     model.m.wipe()  # closes the recorders
