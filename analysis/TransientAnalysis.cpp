@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "analysis/TransientIntegrator.h"
+#include "core/Domain.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
@@ -17,6 +18,7 @@ TransientIntegrator& TransientAnalysis::integrator() {
 }
 
 int TransientAnalysis::analyze(int numSteps, double dt) {
+  domain_.setTransient(true);
   return guarded([&] {
     TransientIntegrator& t = integrator();
     for (int step = 0; step < numSteps; ++step) {
@@ -29,6 +31,7 @@ int TransientAnalysis::analyze(int numSteps, double dt) {
 }
 
 int TransientAnalysis::analyze(int numSteps, double dt, double dtMin, double dtMax, int desiredIterations) {
+  domain_.setTransient(true);
   return guarded([&] {
     TransientIntegrator& t = integrator();
     // As OpenSees: steps until the elapsed time reaches numSteps * dt

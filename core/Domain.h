@@ -152,6 +152,10 @@ class Domain {
   bool addRegionTag(int tag) { return regionTags_.insert(tag).second; }
 
   // --- state ---------------------------------------------------------------------
+  // True while a transient analysis runs (elements that treat impact
+  // differently in dynamics ask; StaticAnalysis clears it).
+  bool transient() const { return transient_; }
+  void setTransient(bool on) { transient_ = on; }
   double currentTime() const { return currentTime_; }
   double committedTime() const { return committedTime_; }
   void setCurrentTime(double t) { currentTime_ = t; }
@@ -206,6 +210,7 @@ class Domain {
   std::vector<double> eigenvalues_;
   std::unique_ptr<ModalDamping> modalDamping_;
   double currentTime_ = 0.0;
+  bool transient_ = false;
   double committedTime_ = 0.0;
   long modelStamp_ = 0;
   // Node-usage cache (nodeUsage()), valid while nodeUsageStamp_ == modelStamp_.

@@ -18,9 +18,48 @@ BeamContact3D::BeamContact3D(int tag, int iNode, int jNode, int sNode, int lNode
       multiplier_(gapTolerance, forceTolerance) {}
 
 void BeamContact3D::setDomain(Domain& domain) {
+  domain_ = &domain;
+  targetValid_ = false;
   setUpGeometry(domain);
   multiplier_.attach(*this, *nodes()[3], domain, context());
   update();
+}
+
+double BeamContact3D::gapTarget() {
+  if (!domain_ || !domain_->transient()) {
+    targetValid_ = false;
+    return 0.0;
+  }
+  const double now = domain_->currentTime();
+  if (targetValid_ && now == targetTime_) return target_;
+  // gdot_n = -B_n . v_n and gddot_n = -B_n . a_n (B_n = -dg/dq, C18), from
+  // the nodes' committed velocities and accelerations.
+  const auto& Bn = geometry_.gapGradient();
+  double gdot = 0.0, gddot = 0.0;
+  const Node* nodes3[3] = {&nodeA(), &nodeB(), &nodeS()};
+  int k = 0;
+  for (int a = 0; a < 3; ++a) {
+    const Vector& v = nodes3[a]->committedVel();
+    const Vector& acc = nodes3[a]->committedAccel();
+    const int n = a < 2 ? 6 : 3;
+    for (int i = 0; i < n; ++i, ++k) {
+      gdot -= Bn(k) * v(i);
+      gddot -= Bn(k) * acc(i);
+    }
+  }
+  // Trapezoidal rule: the target g_n + 3/4 dt gdot_n + dt^2/8 gddot_n halves
+  // the normal velocity in the first step in contact and brings velocity and
+  // acceleration to rest in the second (without it, holding g = g_n + dt/2
+  // gdot_n stops the node in one step but leaves an acceleration of
+  // -2 gdot_n/dt that alternates in sign every step and pulls on the
+  // contact). In steady contact (gdot = gddot = 0) it holds g_n.
+  // The penetration a landing node reached while open is kept, not pushed
+  // out (working it off, even a fifth per step, fed energy into the chatter).
+  const double dt = now - domain_->committedTime();
+  target_ = geometry_.committedGap() + 0.75 * dt * gdot + 0.125 * dt * dt * gddot;
+  targetTime_ = now;
+  targetValid_ = true;
+  return target_;
 }
 
 void BeamContact3D::update() {
@@ -49,7 +88,7 @@ void BeamContact3D::update() {
     normalForce_ = 0.0;
     mechanicalForce_.setZero();
   }
-  multiplier_.setRows(force_, stiffness_, inContact_, geometry_.gap());
+  multiplier_.setRows(force_, stiffness_, inContact_, inContact_ ? geometry_.gap() - gapTarget() : geometry_.gap());
   storeResponseState();
 }
 

@@ -65,7 +65,18 @@ class BeamContact3D : public BeamContactElement {
   bool nextContactStatus(double convergedGap) override;
 
  private:
+  // In a transient analysis the contact holds a target gap g_n + 3/4 dt
+  // gdot_n + dt^2/8 gddot_n over a step instead of g = 0: an inelastic
+  // impact spread over two steps of the trapezoidal rule, instead of the
+  // node being thrown out of a penetration it reached while open (which
+  // pumps energy into every closing). Formed once per step; 0 in statics.
+  double gapTarget();
+
   ContactMultiplier multiplier_;
+  const Domain* domain_ = nullptr;
+  double targetTime_ = 0.0;
+  double target_ = 0.0;
+  bool targetValid_ = false;
   Vector18 force_ = Vector18::Zero();
   Matrix18 stiffness_ = Matrix18::Zero();
 };

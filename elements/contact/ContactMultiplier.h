@@ -43,8 +43,12 @@ class ContactMultiplier {
   // is the converged gap at the step's held geometry (the one lambda drove
   // to zero); for a released node it is the gap re-evaluated at commit.
   bool nextStatus(bool inContact, double convergedGap, double committedGap, bool eligible) const {
+    return nextStatus(inContact, convergedGap, committedGap, eligible, shouldRelease_);
+  }
+  // The same with the release decided by the caller (a filtered lambda).
+  bool nextStatus(bool inContact, double convergedGap, double committedGap, bool eligible, bool release) const {
     const double gap = inContact ? convergedGap : committedGap;
-    return gap < gapTolerance_ && !shouldRelease_ && eligible;
+    return gap < gapTolerance_ && !release && eligible;
   }
 
   // The multiplier node's three rows of an element whose last three dofs

@@ -5,6 +5,7 @@ Coarse meshes and short windows of the shipped record keep every test to seconds
 import math
 import re
 
+import numpy as np
 import pytest
 
 from beamsolid.scenes import seismic_pile as sp
@@ -26,6 +27,33 @@ def test_soil_box_alone_moves_like_the_1d_shear_column():
     assert worst <= 1e-8 * peak, worst / peak
 
 
+def _fixed_row_coupling(m, elements, rho, fixed):
+    """{free node b: sum over fixed nodes f of the consistent mass M_fb = rho int N_f N_b dV}
+    (2 x 2 x 2 Gauss quadrature, exact for trilinear bricks)."""
+    g = 1.0 / math.sqrt(3.0)
+    signs = [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1), (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)]
+    coupling = {}
+    for e in elements:
+        nodes = m.eleNodes(e)
+        if not fixed.intersection(nodes):
+            continue
+        X = np.array([m.nodeCoord(t) for t in nodes])
+        for gp in signs:
+            xi = np.array(gp, dtype=float) * g
+            N = np.array([(1 + s[0] * xi[0]) * (1 + s[1] * xi[1]) * (1 + s[2] * xi[2]) / 8.0 for s in signs])
+            dN = np.array([[s[0] * (1 + s[1] * xi[1]) * (1 + s[2] * xi[2]) / 8.0,
+                            s[1] * (1 + s[0] * xi[0]) * (1 + s[2] * xi[2]) / 8.0,
+                            s[2] * (1 + s[0] * xi[0]) * (1 + s[1] * xi[1]) / 8.0] for s in signs])
+            detJ = abs(np.linalg.det(dN.T @ X))
+            for a, f in enumerate(nodes):
+                if f not in fixed:
+                    continue
+                for b, t in enumerate(nodes):
+                    if t not in fixed:
+                        coupling[t] = coupling.get(t, 0.0) + rho * N[a] * N[b] * detJ
+    return coupling
+
+
 @pytest.fixture(scope="module")
 def recorded_equilibrium():
     """A contact run with the base reactions and the motion of every node after each step."""
@@ -45,12 +73,17 @@ def recorded_equilibrium():
             masses[model.pile_nodes[0]] += problem.head_mass  # nodal mass (ops.mass)
             model._masses = masses
         fixed = model.base_nodes + [model.pile_nodes[-1]]
+        if not hasattr(model, "_coupling"):
+            model._coupling = _fixed_row_coupling(m, model.mesh.elements, problem.soil_rho, set(fixed))
         m.reactions()
         static = sum(m.nodeReaction(n, 1) for n in fixed)
         m.reactions("-rayleigh")
         damping_at_base = sum(m.nodeReaction(n, 1) for n in fixed)
         ag = model.ground_accel(t)
+        # stdBrick's mass is consistent: the fixed nodes' rows couple them to the free nodes'
+        # accelerations, which the static reactions do not hold
         inertia = sum(mass * (m.nodeAccel(n, 1) + ag) for n, mass in model._masses.items())
+        inertia -= sum(c * m.nodeAccel(n, 1) for n, c in model._coupling.items())
         momentum = sum(mass * m.nodeVel(n, 1) for n, mass in model._masses.items())
         states.append((t, static, damping_at_base, inertia, momentum, model))
 
@@ -65,8 +98,11 @@ def test_base_reaction_balances_inertia_and_damping(recorded_equilibrium):
     # base nodes' own mass, which UniformExcitation loads). The mass-proportional damping acts on
     # the relative velocity of every node, so it is held by the bedrock's frame, not the base;
     # the stiffness-proportional part C v = betaK K v sums to zero over all dofs (K 1 = 0), so
-    # what the free dofs lose reaches the base: reactions('-rayleigh') there. Masses: the bricks'
-    # lumped rho * int N_a dV (own Gauss quadrature), half of each pile element's m L, the head mass.
+    # what the free dofs lose reaches the base: reactions('-rayleigh') there (with the fixed rows'
+    # share of alphaM M v, which the consistent brick mass couples to the free nodes). Masses: the
+    # bricks' row sums rho * int N_a dV (own Gauss quadrature; stdBrick's mass is consistent, so
+    # sum_b M_ab a_b over all rows is that), less the fixed rows' coupling M_fb a_b that the static
+    # reactions do not hold; half of each pile element's m L; the head mass.
     problem, result, states = recorded_equilibrium
     assert result.converged and len(states) == 100
     alpha_m, _ = problem.rayleigh
