@@ -19,6 +19,11 @@ class Algorithm {
   bool failedOnSingularMatrix() const { return singular_; }
 
  protected:
+  // Forms and factors the current (initial = false) or initial tangent; the
+  // initial one never changes and is factored once. False when singular,
+  // with lastError() naming the dofs.
+  bool formAndFactor(AnalysisModel& model, Integrator& integrator, bool initial);
+
   std::string lastError_;
   bool singular_ = false;
 };

@@ -35,6 +35,23 @@ cholmod_dense denseView(double* x, int rows, int cols) {
   return d;
 }
 
+// A CSC matrix of which CHOLMOD reads the upper triangle.
+cholmod_sparse symmetricView(int n, std::vector<int>& start, std::vector<int>& row, std::vector<double>& values) {
+  cholmod_sparse s{};
+  s.nrow = s.ncol = n;
+  s.nzmax = row.size();
+  s.p = start.data();
+  s.i = row.data();
+  s.x = values.data();
+  s.stype = 1;
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
 }  // namespace
 
 CondensedSolver::CondensedSolver(std::string requestedName, std::string outerBackend, bool spd,
@@ -107,18 +124,7 @@ void CondensedSolver::analyze(const SparseView& A) {
 
   freeFactor();
   if (nI_ > 0) {
-    cholmod_sparse s{};
-    s.nrow = s.ncol = nI_;
-    s.nzmax = iiRow_.size();
-    s.p = iiStart_.data();
-    s.i = iiRow_.data();
-    s.x = iiValues_.data();
-    s.stype = 1;
-    s.itype = CHOLMOD_INT;
-    s.xtype = CHOLMOD_REAL;
-    s.dtype = CHOLMOD_DOUBLE;
-    s.sorted = 1;
-    s.packed = 1;
+    cholmod_sparse s = symmetricView(nI_, iiStart_, iiRow_, iiValues_);
     factor_ = cholmod_analyze(&s, common_);
     if (!factor_) throw OpenSeesError("system " + requestedName() + ": symbolic analysis of the condensed block failed");
   }
@@ -127,18 +133,7 @@ void CondensedSolver::analyze(const SparseView& A) {
 
 bool CondensedSolver::condense() {
   if (nI_ > 0) {
-    cholmod_sparse s{};
-    s.nrow = s.ncol = nI_;
-    s.nzmax = iiRow_.size();
-    s.p = iiStart_.data();
-    s.i = iiRow_.data();
-    s.x = iiValues_.data();
-    s.stype = 1;
-    s.itype = CHOLMOD_INT;
-    s.xtype = CHOLMOD_REAL;
-    s.dtype = CHOLMOD_DOUBLE;
-    s.sorted = 1;
-    s.packed = 1;
+    cholmod_sparse s = symmetricView(nI_, iiStart_, iiRow_, iiValues_);
     cholmod_factorize(&s, factor_, common_);
     if (common_->status != CHOLMOD_OK) {
       lastError_ = "the condensed block (equations of constant-tangent elements only) is not positive definite";

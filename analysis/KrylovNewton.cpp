@@ -11,18 +11,10 @@
 namespace beamsolid {
 
 bool KrylovNewton::prepareTangent(AnalysisModel& model, Integrator& integrator, Tangent which) {
-  using S = AnalysisModel::Stiffness;
   if (which == Tangent::NoTangent && model.system().isFactored()) return true;
-  const S kind = which == Tangent::Initial ? S::Initial : S::Current;
-  if (kind == S::Initial && model.factoredIs(S::Initial)) return true;  // never changes
-  integrator.formTangent(model, kind);
-  ++factorizations_;
-  if (!model.factor(kind)) {
-    singular_ = true;
-    lastError_ = model.describeFactorFailure();
-    return false;
-  }
-  return true;
+  const bool initial = which == Tangent::Initial;
+  if (!(initial && model.factoredIs(AnalysisModel::Stiffness::Initial))) ++factorizations_;
+  return formAndFactor(model, integrator, initial);
 }
 
 int KrylovNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator, ConvergenceTest& test) {

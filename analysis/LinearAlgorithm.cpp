@@ -20,14 +20,7 @@ class LinearAlgorithm : public Algorithm {
     singular_ = false;
     const S which = initial_ ? S::Initial : S::Current;
     const bool reuse = (initial_ || factorOnce_) && model.factoredIs(which);
-    if (!reuse) {
-      integrator.formTangent(model, which);
-      if (!model.factor(which)) {
-        singular_ = true;
-        lastError_ = model.describeFactorFailure();
-        return -3;
-      }
-    }
+    if (!reuse && !formAndFactor(model, integrator, initial_)) return -3;
     integrator.formUnbalance(model);
     model.system().solve();
     return integrator.update(model, model.system().x()) < 0 ? -3 : 0;

@@ -14,19 +14,7 @@ bool Newton::prepareTangent(AnalysisModel& model, Integrator& integrator, int it
   S which = S::Current;
   if (tangent_ == Tangent::Initial || (tangent_ == Tangent::InitialThenCurrent && iteration == 0)) which = S::Initial;
   if (modified_ && iteration > 0 && model.system().isFactored()) return true;
-  return formAndFactor(model, integrator, which);
-}
-
-bool Newton::formAndFactor(AnalysisModel& model, Integrator& integrator, AnalysisModel::Stiffness which) {
-  // The initial stiffness never changes: factor it once and keep it.
-  if (which == AnalysisModel::Stiffness::Initial && model.factoredIs(which)) return true;
-  integrator.formTangent(model, which);
-  if (!model.factor(which)) {
-    singular_ = true;
-    lastError_ = model.describeFactorFailure();
-    return false;
-  }
-  return true;
+  return formAndFactor(model, integrator, which == S::Initial);
 }
 
 int Newton::solveCurrentStep(AnalysisModel& model, Integrator& integrator, ConvergenceTest& test) {

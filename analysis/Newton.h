@@ -18,8 +18,6 @@ class Newton : public Algorithm {
  protected:
   // Forms and factors the tangent this iteration needs; false if singular.
   virtual bool prepareTangent(AnalysisModel& model, Integrator& integrator, int iteration);
-  // Forms and factors one kind of tangent (the initial one only once).
-  bool formAndFactor(AnalysisModel& model, Integrator& integrator, AnalysisModel::Stiffness which);
 
   Tangent tangent_;
   bool modified_;

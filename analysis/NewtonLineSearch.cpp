@@ -81,12 +81,7 @@ int NewtonLineSearch::solveCurrentStep(AnalysisModel& model, Integrator& integra
   test.start(system);
   Vector direction, total;
   for (;;) {
-    integrator.formTangent(model, S::Current);
-    if (!model.factor(S::Current)) {
-      singular_ = true;
-      lastError_ = model.describeFactorFailure();
-      return -3;
-    }
+    if (!formAndFactor(model, integrator, false)) return -3;
     system.solve();
     direction = system.x();
     const double s0 = direction.dot(system.b());

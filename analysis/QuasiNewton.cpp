@@ -11,16 +11,7 @@
 namespace beamsolid {
 
 bool QuasiNewton::prepareTangent(AnalysisModel& model, Integrator& integrator) {
-  using S = AnalysisModel::Stiffness;
-  const S kind = initial_ ? S::Initial : S::Current;
-  if (kind == S::Initial && model.factoredIs(S::Initial)) return true;  // never changes
-  integrator.formTangent(model, kind);
-  if (!model.factor(kind)) {
-    singular_ = true;
-    lastError_ = model.describeFactorFailure();
-    return false;
-  }
-  return true;
+  return formAndFactor(model, integrator, initial_);
 }
 
 Vector QuasiNewton::apply(AnalysisModel& model, const Vector& b) const {

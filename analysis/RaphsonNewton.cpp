@@ -10,8 +10,7 @@ bool RaphsonNewton::prepareTangent(AnalysisModel& model, Integrator& integrator,
   const Choice choice = iteration == 0 ? increment_ : iterate_;
   // noTangent keeps the factorization there is; with none yet, form the current one.
   if (choice == Choice::NoTangent && model.system().isFactored()) return true;
-  return formAndFactor(model, integrator,
-                       choice == Choice::Initial ? AnalysisModel::Stiffness::Initial : AnalysisModel::Stiffness::Current);
+  return formAndFactor(model, integrator, choice == Choice::Initial);
 }
 
 namespace {

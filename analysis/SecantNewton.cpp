@@ -11,17 +11,8 @@
 namespace beamsolid {
 
 bool SecantNewton::prepareTangent(AnalysisModel& model, Integrator& integrator, Tangent which) {
-  using S = AnalysisModel::Stiffness;
   if (which == Tangent::NoTangent && model.system().isFactored()) return true;
-  const S kind = which == Tangent::Initial ? S::Initial : S::Current;
-  if (kind == S::Initial && model.factoredIs(S::Initial)) return true;  // never changes
-  integrator.formTangent(model, kind);
-  if (!model.factor(kind)) {
-    singular_ = true;
-    lastError_ = model.describeFactorFailure();
-    return false;
-  }
-  return true;
+  return formAndFactor(model, integrator, which == Tangent::Initial);
 }
 
 int SecantNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator, ConvergenceTest& test) {
