@@ -21,6 +21,13 @@ std::unique_ptr<UniaxialMaterial> ElasticPPMaterial::clone() const {
 }
 
 void ElasticPPMaterial::setTrialStrain(double strain, double) {
+  // A change below machine epsilon keeps the committed stress and tangent (as OpenSees, found
+  // by running it; unlike Steel01 the new strain is kept, so the next change counts from it).
+  if (std::fabs(strain - committedStrain_) < std::numeric_limits<double>::epsilon()) {
+    revertToLastCommit();
+    trialStrain_ = strain;
+    return;
+  }
   trialStrain_ = strain;
   const double fyP = E_ * epsyP_;
   const double fyN = E_ * epsyN_;
