@@ -28,6 +28,10 @@ void ElasticPPMaterial::setTrialStrain(double strain, double) {
     trialStrain_ = strain;
     return;
   }
+  trialFrom(strain);
+}
+
+void ElasticPPMaterial::trialFrom(double strain) {
   trialStrain_ = strain;
   const double fyP = E_ * epsyP_;
   const double fyN = E_ * epsyN_;
@@ -71,7 +75,7 @@ void ElasticPPMaterial::revertToLastCommit() {
 
 void ElasticPPMaterial::revertToStart() {
   committedPlasticStrain_ = 0.0;
-  setTrialStrain(0.0);
+  trialFrom(0.0);
   commitState();
 }
 
