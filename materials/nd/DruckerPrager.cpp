@@ -58,6 +58,7 @@ DruckerPrager::DruckerPrager(int tag, const Parameters& p) : NDMaterial(tag), p_
   T0_ = kSqrt23 * p_.sigmaY / p_.rho;
   elastic_ = voigt::isotropicElasticity(p_.K, p_.G);
   tangent_ = elastic_;
+  tangentCommitted_ = elastic_;
 }
 
 std::unique_ptr<NDMaterial> DruckerPrager::clone(const std::string& kind) const {
@@ -278,11 +279,23 @@ void DruckerPrager::commitState() {
   alphaCommitted_ = alphaTrial_;
   alphaTensionCommitted_ = alphaTensionTrial_;
   strainCommitted_ = strain_;
+  stressCommitted_ = stress_;
+  tangentCommitted_ = tangent_;
+  committedAnswerValid_ = true;
 }
 
 void DruckerPrager::revertToLastCommit() {
   strain_ = strainCommitted_;
-  integrate();
+  if (!committedAnswerValid_) {
+    integrate();
+    return;
+  }
+  stress_ = stressCommitted_;
+  tangent_ = tangentCommitted_;
+  plasticStrainTrial_ = plasticStrainCommitted_;
+  backStressTrial_ = backStressCommitted_;
+  alphaTrial_ = alphaCommitted_;
+  alphaTensionTrial_ = alphaTensionCommitted_;
 }
 
 void DruckerPrager::revertToStart() {
@@ -292,6 +305,9 @@ void DruckerPrager::revertToStart() {
   strainCommitted_.setZero();
   strain_.setZero();
   integrate();
+  stressCommitted_ = stress_;
+  tangentCommitted_ = tangent_;
+  committedAnswerValid_ = true;
 }
 
 void DruckerPrager::updateStage(int stage) {
@@ -299,6 +315,7 @@ void DruckerPrager::updateStage(int stage) {
     throw OpenSeesError("updateMaterialStage: nDMaterial DruckerPrager " + std::to_string(tag()) +
                         ": stage must be 0 (elastic) or 1 (plastic), got " + std::to_string(stage));
   stage_ = stage;
+  committedAnswerValid_ = false;
   integrate();
 }
 
@@ -308,6 +325,7 @@ bool DruckerPrager::setParameter(const std::vector<std::string>& args, double va
   const std::string context = "setParameter: nDMaterial DruckerPrager " + std::to_string(tag()) + ": ";
   if (name == "materialState") {
     const long v = std::lround(value);
+    committedAnswerValid_ = false;
     if (v == 0) stage_ = 0;
     else if (v == 2) stage_ = 1;
     else
@@ -331,6 +349,7 @@ bool DruckerPrager::setParameter(const std::vector<std::string>& args, double va
   const std::string problem = checkParameters(p);
   if (!problem.empty()) throw OpenSeesError(context + problem);
   p_ = p;
+  committedAnswerValid_ = false;
   T0_ = kSqrt23 * p_.sigmaY / p_.rho;
   elastic_ = voigt::isotropicElasticity(p_.K, p_.G);
   integrate();

@@ -92,6 +92,11 @@ class DruckerPrager : public NDMaterial {
   double alphaTrial_ = 0.0, alphaCommitted_ = 0.0;
   double alphaTensionTrial_ = 0.0, alphaTensionCommitted_ = 0.0;
   Vector6 strainCommitted_ = Vector6::Zero();
+  // The committed answer, restored as it was by revertToLastCommit.
+  Vector6 stressCommitted_ = Vector6::Zero();
+  Matrix6 tangentCommitted_;
+  // False once a stage or parameter change makes the stored answer stale.
+  bool committedAnswerValid_ = true;
 };
 
 }  // namespace beamsolid

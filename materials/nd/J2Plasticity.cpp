@@ -33,6 +33,7 @@ J2Plasticity::J2Plasticity(int tag, const Parameters& p) : NDMaterial(tag), p_(p
   if (!problem.empty()) throw OpenSeesError("nDMaterial J2Plasticity " + std::to_string(tag) + ": " + problem);
   elastic_ = voigt::isotropicElasticity(p_.K, p_.G);
   tangent_ = elastic_;
+  tangentCommitted_ = elastic_;
 }
 
 std::unique_ptr<NDMaterial> J2Plasticity::clone(const std::string& kind) const {
@@ -121,11 +122,22 @@ void J2Plasticity::commitState() {
   backStressCommitted_ = backStressTrial_;
   xiCommitted_ = xiTrial_;
   strainCommitted_ = strain_;
+  stressCommitted_ = stress_;
+  tangentCommitted_ = tangent_;
+  committedAnswerValid_ = true;
 }
 
 void J2Plasticity::revertToLastCommit() {
   strain_ = strainCommitted_;
-  integrate();
+  if (!committedAnswerValid_) {
+    integrate();
+    return;
+  }
+  stress_ = stressCommitted_;
+  tangent_ = tangentCommitted_;
+  plasticStrainTrial_ = plasticStrainCommitted_;
+  backStressTrial_ = backStressCommitted_;
+  xiTrial_ = xiCommitted_;
 }
 
 void J2Plasticity::revertToStart() {
@@ -135,6 +147,9 @@ void J2Plasticity::revertToStart() {
   strainCommitted_.setZero();
   strain_.setZero();
   integrate();
+  stressCommitted_ = stress_;
+  tangentCommitted_ = tangent_;
+  committedAnswerValid_ = true;
 }
 
 void J2Plasticity::updateStage(int stage) {
@@ -142,6 +157,7 @@ void J2Plasticity::updateStage(int stage) {
     throw OpenSeesError("updateMaterialStage: nDMaterial J2Plasticity " + std::to_string(tag()) +
                         ": stage must be 0 (elastic) or 1 (plastic), got " + std::to_string(stage));
   stage_ = stage;
+  committedAnswerValid_ = false;
   integrate();
 }
 
@@ -163,6 +179,7 @@ bool J2Plasticity::setParameter(const std::vector<std::string>& args, double val
   const std::string problem = checkParameters(p);
   if (!problem.empty()) throw OpenSeesError("setParameter: nDMaterial J2Plasticity " + std::to_string(tag()) + ": " + problem);
   p_ = p;
+  committedAnswerValid_ = false;
   elastic_ = voigt::isotropicElasticity(p_.K, p_.G);
   integrate();
   return true;

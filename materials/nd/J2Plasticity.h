@@ -82,6 +82,11 @@ class J2Plasticity : public NDMaterial {
   Vector6 backStressTrial_ = Vector6::Zero(), backStressCommitted_ = Vector6::Zero();
   double xiTrial_ = 0.0, xiCommitted_ = 0.0;
   Vector6 strainCommitted_ = Vector6::Zero();
+  // The committed answer, restored as it was by revertToLastCommit.
+  Vector6 stressCommitted_ = Vector6::Zero();
+  Matrix6 tangentCommitted_;
+  // False once a stage or parameter change makes the stored answer stale.
+  bool committedAnswerValid_ = true;
 };
 
 }  // namespace beamsolid

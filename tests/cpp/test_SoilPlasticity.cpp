@@ -35,8 +35,10 @@ Vector6 v6(double a, double b, double c, double d, double e, double f) {
   return v;
 }
 
-// Largest |D - D_fd| / max|D| with D_fd the central difference of the
-// stress about the current trial strain (the committed state unchanged).
+// Largest |D - D_fd| / max|D_elastic| with D_fd the central difference of
+// the stress about the current trial strain (the committed state
+// unchanged); the elastic scale, since D itself may vanish (a perfectly
+// plastic apex).
 double tangentError(NDMaterial& m, double h) {
   const Vector eps = m.strain();
   const Matrix D = m.tangent();
@@ -53,7 +55,7 @@ double tangentError(NDMaterial& m, double h) {
     fd.col(j) = (plus - minus) / (2 * h);
   }
   m.setTrialStrain(eps);
-  return (D - fd).cwiseAbs().maxCoeff() / D.cwiseAbs().maxCoeff();
+  return (D - fd).cwiseAbs().maxCoeff() / Matrix(m.initialTangent()).cwiseAbs().maxCoeff();
 }
 
 // Axial strain e11 with s22 = s33 = lateral (stress control by Newton on
@@ -142,13 +144,13 @@ TEST(J2Plasticity, ConsistentTangentMatchesFiniteDifferences) {
   auto m = build("J2Plasticity", 1, 160e3, 80e3, 250.0, 400.0, 15.0, 800.0, 0.0, "-kinematic", 500.0);
   // Elastic.
   m->setTrialStrain(v6(1e-4, -2e-5, 3e-5, 1e-4, 0, -5e-5));
-  EXPECT_LE(tangentError(*m, 1e-9), 1e-7);
+  EXPECT_LE(tangentError(*m, 1e-9), 1e-8);
   // Plastic from a plastic committed state, then a change of direction.
   m->setTrialStrain(v6(0.004, -0.001, 0.0005, 0.003, -0.002, 0.001));
   m->commitState();
   m->setTrialStrain(v6(0.005, -0.001, 0.0, 0.006, -0.001, 0.0));
   EXPECT_GT(dynamic_cast<J2Plasticity&>(*m).equivalentPlasticStrain(), 0.0);
-  EXPECT_LE(tangentError(*m, 1e-9), 1e-6);
+  EXPECT_LE(tangentError(*m, 1e-9), 1e-8);
 }
 
 TEST(J2Plasticity, PlaneStrainAndPlaneStressTangentsMatchFiniteDifferences) {
@@ -157,11 +159,11 @@ TEST(J2Plasticity, PlaneStrainAndPlaneStressTangentsMatchFiniteDifferences) {
     auto m = proto->clone(kind);
     ASSERT_TRUE(m) << kind;
     m->setTrialStrain(Eigen::Vector3d(1e-4, -5e-5, 2e-5));
-    EXPECT_LE(tangentError(*m, 1e-9), 1e-7) << kind << " elastic";
+    EXPECT_LE(tangentError(*m, 1e-9), 1e-8) << kind << " elastic";
     m->setTrialStrain(Eigen::Vector3d(0.004, -0.001, 0.003));
     m->commitState();
     m->setTrialStrain(Eigen::Vector3d(0.005, 0.001, 0.002));
-    EXPECT_LE(tangentError(*m, 1e-9), 1e-6) << kind << " plastic";
+    EXPECT_LE(tangentError(*m, 1e-9), 1e-8) << kind << " plastic";
   }
 }
 
@@ -299,7 +301,7 @@ TEST(DruckerPrager, TensionCutoffHoldsI1AtT0) {
 }
 
 TEST(DruckerPrager, ReturnMapOneStepEqualsManySteps) {
-  const Vector6 direction = v6(-0.004, -0.001, -0.0005, 0.003, -0.002, 0.001);
+  const Vector6 direction = v6(-0.001, 0.0005, 0.0002, 0.006, -0.002, 0.001);
   for (auto make : std::vector<std::function<std::unique_ptr<NDMaterial>()>>{
            [] { return dp(0.3, 0.3); }, [] { return dp(0.3, 0.1, 500.0, 1.0, 10.0, 2.0, 20.0); },
            [] { return dp(0.3, 0.2, 300.0, 0.0); }}) {
@@ -319,26 +321,31 @@ TEST(DruckerPrager, ReturnMapOneStepEqualsManySteps) {
 TEST(DruckerPrager, ConsistentTangentMatchesFiniteDifferencesInEveryRegion) {
   struct Case {
     const char* name;
+    bool hardening;
     int region;
     Vector6 committed, trial;
   };
   const std::vector<Case> cases = {
-      {"elastic", 0, Vector6::Zero(), v6(-1e-4, -1e-4, -2e-4, 1e-5, 0, 0)},
-      {"cone", 1, Vector6::Zero(), v6(-0.004, -0.001, -0.0005, 0.003, -0.002, 0.001)},
-      {"cone from plastic", 1, v6(-0.002, -0.001, 0.0, 0.002, 0, 0), v6(-0.003, -0.001, 0.0005, 0.001, 0.002, 0.0)},
-      {"apex", 2, Vector6::Zero(), v6(2e-4, 2e-4, 2.2e-4, 1e-5, 0, 0)},
-      {"cutoff", 3, Vector6::Zero(), v6(0.01, 0.01, 0.01, 0, 0, 0)},
-      {"cone and cutoff", 4, Vector6::Zero(), v6(0.01, 0.01, 0.01, 0.002, 0.0, 0.0)},
+      {"elastic", true, 0, Vector6::Zero(), v6(-1e-4, -1e-4, -2e-4, 1e-5, 0, 0)},
+      {"cone", true, 1, Vector6::Zero(), v6(-0.001, 0.0005, 0.0002, 0.006, -0.002, 0.001)},
+      {"cone from plastic", true, 1, v6(-0.001, 0.0005, 0.0002, 0.006, -0.002, 0.001),
+       v6(-0.0012, 0.0006, 0.0003, 0.008, -0.001, 0.002)},
+      {"apex", false, 2, Vector6::Zero(), v6(2e-4, 2e-4, 2.2e-4, 1e-5, 0, 0)},
+      {"cutoff", true, 3, Vector6::Zero(), v6(0.01, 0.01, 0.01, 0, 0, 0)},
+      {"cone and cutoff", true, 4, Vector6::Zero(), v6(0.01, 0.01, 0.01, 0.002, 0.0, 0.0)},
   };
   for (double rhoBar : {0.3, 0.1}) {
     for (const Case& c : cases) {
-      auto m = dp(0.3, rhoBar, 200.0, 0.6, 10.0, 2.0, 20.0, 5.0);
+      auto m = c.hardening ? dp(0.3, rhoBar, 200.0, 0.6, 10.0, 2.0, 20.0, 5.0) : dp(0.3, rhoBar);
       m->setTrialStrain(c.committed);
       m->commitState();
       m->setTrialStrain(c.trial);
-      if (c.region == 2 && rhoBar == 0.1) continue;  // the apex is reached only with enough dilatancy here
       EXPECT_EQ(lastReturn(*m), c.region) << c.name << " rhoBar " << rhoBar;
-      EXPECT_LE(tangentError(*m, 1e-10), 2e-6) << c.name << " rhoBar " << rhoBar;
+      // The central difference converges to the consistent tangent: its
+      // error falls with h (to round-off) when D is right.
+      double best = 1.0;
+      for (double h : {1e-7, 1e-8, 1e-9}) best = std::min(best, tangentError(*m, h));
+      EXPECT_LE(best, 1e-9) << c.name << " rhoBar " << rhoBar;
     }
   }
 }
@@ -350,7 +357,7 @@ TEST(DruckerPrager, PlaneStrainTangentMatchesFiniteDifferences) {
   m->setTrialStrain(Eigen::Vector3d(-0.003, -0.001, 0.002));
   m->commitState();
   m->setTrialStrain(Eigen::Vector3d(-0.004, 0.0, 0.004));
-  EXPECT_LE(tangentError(*m, 1e-10), 2e-6);
+  EXPECT_LE(tangentError(*m, 1e-10), 1e-7);
 }
 
 TEST(DruckerPrager, RevertAndStages) {
