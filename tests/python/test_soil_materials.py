@@ -191,3 +191,42 @@ def test_kinematic_option_gives_the_bauschinger_effect(model):
     assert s == pytest.approx(smax - 2 * 250.0 * 0.999, rel=1e-10)
     back = model.eleResponse(1, "material", "1", "backStress")
     assert back[2] == pytest.approx(2.0 / 3.0 * (smax - 250.0), rel=1e-9)
+
+
+def test_element_plastic_responses_and_paraview_arrays(model, tmp_path):
+    # Uniaxial stress past yield: every Gauss point has eps_p33 = e - sigma/E
+    # and eps_p11 = eps_p22 = -eps_p33 / 2 (isochoric); the PVD cell arrays
+    # are their means, and the elastic brick beside it reports zeros.
+    import glob
+
+    import meshio
+
+    cube(model, J2)
+    model.nDMaterial("ElasticIsotropic", 2, 1000.0, 0.25)
+    for i, x in enumerate(CUBE, start=11):
+        model.node(i, float(x[0]) + 2.0, float(x[1]), float(x[2]))
+        model.fix(i, 1, 1, 1)
+    model.element("stdBrick", 2, *range(11, 19), 2)
+    model.recorder("PVD", str(tmp_path / "soil"))
+    model.integrator("LoadControl", 3 * 250.0 / E)
+    model.analysis("Static")
+    assert model.analyze(1) == 0
+    eps = 3 * 250.0 / E
+    sigma = 250.0 + E * 2000.0 / (E + 2000.0) * (eps - 250.0 / E)
+    ep = np.array(model.eleResponse(1, "plasticStrains")).reshape(8, 6)
+    np.testing.assert_allclose(ep[:, 2], eps - sigma / E, rtol=1e-9)
+    np.testing.assert_allclose(ep[:, 0], -(eps - sigma / E) / 2, rtol=1e-9)
+    xi = np.array(model.eleResponse(1, "equivalentPlasticStrains"))
+    np.testing.assert_allclose(xi, eps - sigma / E, rtol=1e-9)
+    with pytest.raises(beamsolid.OpenSeesError):
+        model.eleResponse(2, "plasticStrains")  # elastic material: no plastic state
+    model.wipe()
+    files = sorted(glob.glob(str(tmp_path / "soil" / "*.vtu")))
+    assert files
+    grid = meshio.read(files[-1])
+    cells = {name: np.concatenate(blocks) for name, blocks in grid.cell_data.items()}
+    order = list(cells["elementTag"].ravel())
+    i1, i2 = order.index(1), order.index(2)
+    np.testing.assert_allclose(cells["plasticStrain"][i1], ep.mean(axis=0), rtol=1e-9)
+    np.testing.assert_allclose(cells["equivalentPlasticStrain"][i1].ravel(), [xi.mean()], rtol=1e-9)
+    assert not np.any(cells["plasticStrain"][i2])
