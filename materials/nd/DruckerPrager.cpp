@@ -1,6 +1,7 @@
 #include "materials/nd/DruckerPrager.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
@@ -23,7 +24,7 @@ std::string checkParameters(const DruckerPrager::Parameters& p) {
     return v >= 0.0 ? std::string() : std::string(name) + " must be >= 0, got " + std::to_string(v);
   };
   for (const std::string& s : {positive("K", p.K), positive("G", p.G), positive("sigmaY", p.sigmaY),
-                               positive("rho", p.rho), nonNegative("rhoBar", p.rhoBar), nonNegative("Kinf", p.Kinf),
+                               nonNegative("rho", p.rho), nonNegative("rhoBar", p.rhoBar), nonNegative("Kinf", p.Kinf),
                                nonNegative("Ko", p.Ko), nonNegative("delta1", p.delta1),
                                nonNegative("delta2", p.delta2), nonNegative("H", p.H),
                                nonNegative("density", p.density), positive("atmPressure", p.atmPressure)})
@@ -55,7 +56,8 @@ struct DruckerPrager::Trial {
 DruckerPrager::DruckerPrager(int tag, const Parameters& p) : NDMaterial(tag), p_(p) {
   const std::string problem = checkParameters(p_);
   if (!problem.empty()) throw OpenSeesError("nDMaterial DruckerPrager " + std::to_string(tag) + ": " + problem);
-  T0_ = kSqrt23 * p_.sigmaY / p_.rho;
+  // rho = 0 is von Mises with no cutoff (OpenSees accepts it too).
+  T0_ = p_.rho > 0.0 ? kSqrt23 * p_.sigmaY / p_.rho : std::numeric_limits<double>::infinity();
   elastic_ = voigt::isotropicElasticity(p_.K, p_.G);
   tangent_ = elastic_;
   tangentCommitted_ = elastic_;
@@ -76,7 +78,9 @@ double DruckerPrager::dY(double a) const {
   return p_.theta * p_.H + (p_.Kinf - p_.Ko) * p_.delta1 * std::exp(-p_.delta1 * a);
 }
 double DruckerPrager::T(double aT) const { return T0_ * std::exp(-p_.delta2 * aT); }
-double DruckerPrager::dT(double aT) const { return -p_.delta2 * T0_ * std::exp(-p_.delta2 * aT); }
+double DruckerPrager::dT(double aT) const {
+  return p_.delta2 == 0.0 ? 0.0 : -p_.delta2 * T0_ * std::exp(-p_.delta2 * aT);
+}
 
 void DruckerPrager::setTrialStrain(const Eigen::Ref<const Vector>& strain) {
   if (strain.size() != 6)
@@ -350,7 +354,7 @@ bool DruckerPrager::setParameter(const std::vector<std::string>& args, double va
   if (!problem.empty()) throw OpenSeesError(context + problem);
   p_ = p;
   committedAnswerValid_ = false;
-  T0_ = kSqrt23 * p_.sigmaY / p_.rho;
+  T0_ = p_.rho > 0.0 ? kSqrt23 * p_.sigmaY / p_.rho : std::numeric_limits<double>::infinity();
   elastic_ = voigt::isotropicElasticity(p_.K, p_.G);
   integrate();
   return true;
@@ -360,12 +364,13 @@ Response DruckerPrager::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
   const std::string& what = args[0];
   if (what == "state")
-    return Response::named({"I1", "normS", "trEpsP", "normEpsPdev"}, [this] {
-      Vector out(4);
+    return Response::named({"I1", "normS", "trEpsP", "normEpsPdev", "normEpsP"}, [this] {
+      Vector out(5);
       out(0) = voigt::trace(stress_);
       out(1) = voigt::norm(voigt::deviator(stress_) - backStressTrial_);
       out(2) = voigt::trace(plasticStrainTrial_);
       out(3) = voigt::norm(voigt::deviator(plasticStrainTrial_));
+      out(4) = voigt::norm(plasticStrainTrial_);
       return out;
     });
   if (what == "plasticStrain" || what == "plasticStrains")

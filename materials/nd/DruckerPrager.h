@@ -11,6 +11,7 @@ namespace beamsolid {
 //   cone:      f1 = ||s - beta|| + rho I1 - sqrt(2/3) Y(alpha)
 //              Y(alpha) = sigmaY + theta H alpha + (Kinf - Ko)(1 - exp(-delta1 alpha))
 //   cutoff:    f2 = I1 - T(alphaT),  T = T0 exp(-delta2 alphaT),  T0 = sqrt(2/3) sigmaY / rho
+//              (rho = 0: von Mises, no cutoff)
 //   flow:      d eps_p = dgamma1 (n + rhoBar 1) + dgamma2 1,
 //              d alpha = sqrt(2/3) dgamma1, d beta = (2/3)(1 - theta) H dgamma1 n,
 //              d alphaT = dgamma2
@@ -55,8 +56,9 @@ class DruckerPrager : public NDMaterial {
 
   void updateStage(int stage) override;
   bool setParameter(const std::vector<std::string>& args, double value) override;
-  // Beyond 'stress', 'strain', 'tangent': 'state' (OpenSees' four columns:
-  // I1, ||s - beta||, tr(eps_p), ||dev(eps_p)||), 'plasticStrain' (6,
+  // Beyond 'stress', 'strain', 'tangent': 'state' (as OpenSeesPy 3.7.1:
+  // I1, ||s - beta||, tr(eps_p), ||dev(eps_p)||, ||eps_p||; the manual
+  // lists the first four), 'plasticStrain' (6,
   // engineering shears), 'equivalentPlasticStrain' (alpha).
   Response setResponse(const std::vector<std::string>& args) override;
   void print(std::ostream& os) const override;

@@ -52,6 +52,9 @@ def _record(ops, out, key, ndf_top, top_nodes, dof):
     out.setdefault(key + ".stress", []).append(ops.eleResponse(1, "material", "1", "stress"))
     out.setdefault(key + ".strain", []).append(ops.eleResponse(1, "material", "1", "strain"))
     out.setdefault(key + ".reaction", []).append(sum(ops.nodeReaction(n, dof) for n in top_nodes))
+    if key.startswith("dp"):
+        # I1, ||s - beta||, tr(eps_p), ||dev(eps_p)||, ||eps_p||
+        out.setdefault(key + ".state", []).append(ops.eleResponse(1, "material", "1", "state"))
 
 
 def _cyclic_top(ops, out, key, top_nodes, dof, amplitude, steps_per_leg=12):
