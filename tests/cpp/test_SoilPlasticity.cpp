@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <random>
 
 #include "SolidsTestSupport.h"
 #include "core/OpenSeesError.h"
@@ -424,4 +425,54 @@ TEST(DruckerPrager, BadArgumentsNameTheCommandAndTheArgument) {
   expectError([] { build("DruckerPrager", 1, 1e4, 5e3, 5.0, -0.1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0); }, "rho");
   expectError([] { build("DruckerPrager", 1, 1e4, 5e3, 5.0, 0.3, 0.1, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1e5, 3.0); },
               "unexpected");
+}
+
+// ---------------------------------------------------------------- robustness
+
+TEST(SoilPlasticity, RandomStrainsStayAdmissibleOrFailCleanly) {
+  // Random strains from 1e-7 to 1 (log-uniform), committed at random: each
+  // answer is finite and on or inside the yield surfaces, or the material
+  // raises OpenSeesError (ElementStateError: the step fails). Nothing hangs.
+  std::mt19937 rng(20261126);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double c = std::sqrt(2.0 / 3.0);
+  int plastic = 0, failures = 0;
+  auto j2 = build("J2Plasticity", 1, 160e3, 80e3, 250.0, 400.0, 15.0, 800.0, 0.0, "-kinematic", 500.0);
+  auto dpm = dp(0.3, 0.1, 200.0, 0.6, 10.0, 2.0, 20.0, 0.0);  // isotropic and kinematic
+  for (int k = 0; k < 3000; ++k) {
+    Vector6 eps;
+    for (int i = 0; i < 6; ++i) eps(i) = unit(rng);
+    eps *= std::pow(10.0, -7.0 + 7.0 * (0.5 + 0.5 * unit(rng)));
+    try {
+      j2->setTrialStrain(eps);
+      const Vector s = j2->stress();
+      ASSERT_TRUE(s.allFinite());
+      auto& m = dynamic_cast<J2Plasticity&>(*j2);
+      const double xi = m.equivalentPlasticStrain();
+      const double q = 250.0 + 150.0 * (1 - std::exp(-15.0 * xi)) + 800.0 * xi;
+      const Vector beta = m.setResponse({"backStress"}).value();
+      Vector6 dev = voigt::deviator(Vector6(s)) - Vector6(beta);
+      EXPECT_LE(voigt::norm(dev), c * q * (1 + 1e-10));
+      if (xi > 0) ++plastic;
+      if (unit(rng) > 0.5) j2->commitState();
+    } catch (const OpenSeesError&) {
+      ++failures;
+    }
+    try {
+      dpm->setTrialStrain(eps);
+      const Vector s = dpm->stress();
+      ASSERT_TRUE(s.allFinite());
+      const Vector state = dpm->setResponse({"state"}).value();
+      const double alpha = dpm->setResponse({"equivalentPlasticStrain"}).value()(0);
+      const double Y = 5.0 + 0.6 * 200.0 * alpha + (10.0 - 2.0) * (1 - std::exp(-20.0 * alpha));
+      const double scale = std::abs(state(0)) + state(1) + 5.0;
+      EXPECT_LE(state(1) + 0.3 * state(0) - c * Y, 1e-9 * scale);  // cone
+      EXPECT_LE(state(0) - c * 5.0 / 0.3, 1e-9 * scale);           // cutoff (delta2 = 0)
+      if (unit(rng) > 0.5) dpm->commitState();
+    } catch (const OpenSeesError&) {
+      ++failures;
+    }
+  }
+  EXPECT_GT(plastic, 100);
+  EXPECT_EQ(failures, 0);
 }

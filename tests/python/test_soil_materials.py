@@ -121,11 +121,22 @@ def test_stage_change_invalidates_the_bricks_cached_tangent(model):
     assert model.testIter() <= 3
 
 
-def test_newton_converges_quadratically_on_a_yielding_brick_mesh(model):
-    # 2 x 2 x 2 bricks, bottom fixed, top pushed sideways and down: J2 with
-    # saturation hardening yields under a non-proportional strain field.
+RATE_CASES = {
+    # J2 with saturation hardening, pushed sideways and down.
+    "J2": (("J2Plasticity", 1, K, G, 250.0, 320.0, 40.0, 900.0), -0.3, 0.004),
+    # Non-associative Drucker-Prager (unsymmetric tangent) with hardening.
+    "DP": (("DruckerPrager", 1, 27777.78, 9259.26, 5.0, 0.398, 0.1, 20.0, 5.0, 30.0, 0.0, 100.0, 1.0, 1.7), -0.5,
+           0.001),
+}
+
+
+@pytest.mark.parametrize("case", sorted(RATE_CASES))
+def test_newton_converges_quadratically_on_a_yielding_brick_mesh(model, case):
+    # 2 x 2 x 2 bricks, bottom fixed, the top moved sideways and down: a
+    # non-proportional strain field, every Gauss point plastic by step 3.
+    material, down, step = RATE_CASES[case]
     model.model("basic", "-ndm", 3, "-ndf", 3)
-    model.nDMaterial("J2Plasticity", 1, K, G, 250.0, 320.0, 40.0, 900.0)
+    model.nDMaterial(*material)
     model.block3D(2, 2, 2, 1, 1, "stdBrick", 1, 1, 0.0, 0.0, 0.0, 2, 1.0, 0.0, 0.0, 3, 1.0, 1.0, 0.0, 4, 0.0, 1.0,
                   0.0, 5, 0.0, 0.0, 1.0, 6, 1.0, 0.0, 1.0, 7, 1.0, 1.0, 1.0, 8, 0.0, 1.0, 1.0)
     model.fixZ(0.0, 1, 1, 1)
@@ -134,18 +145,19 @@ def test_newton_converges_quadratically_on_a_yielding_brick_mesh(model):
     model.pattern("Plain", 1, 1)
     for n in top:
         model.sp(n, 1, 1.0)
-        model.sp(n, 3, -0.3)
+        model.sp(n, 3, down)
     model.constraints("Transformation")
     model.numberer("Plain")
     model.system("UmfPack")
     model.test("NormDispIncr", 1e-14, 30)
     model.algorithm("Newton")
-    model.integrator("LoadControl", 0.004)
+    model.integrator("LoadControl", step)
     model.analysis("Static")
-    assert model.analyze(2) == 0  # well past yield (gamma 0.008 ~ 4.8 yield strains)
+    assert model.analyze(2) == 0
     assert model.analyze(1) == 0
+    assert all(model.eleResponse(e, "equivalentPlasticStrains")[0] > 0 for e in range(1, 9))
     norms = np.array(model.testNorm()[: model.testIter()])
-    norms = norms[norms > 1e-13]
+    norms = norms[norms > 1e-13]  # below: round-off
     assert len(norms) >= 4, norms
     orders = np.log(norms[2:] / norms[1:-1]) / np.log(norms[1:-1] / norms[:-2])
     assert orders[-1] >= 1.8, (norms, orders)
