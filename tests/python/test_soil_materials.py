@@ -242,3 +242,52 @@ def test_element_plastic_responses_and_paraview_arrays(model, tmp_path):
     np.testing.assert_allclose(cells["plasticStrain"][i1], ep.mean(axis=0), rtol=1e-9)
     np.testing.assert_allclose(cells["equivalentPlasticStrain"][i1].ravel(), [xi.mean()], rtol=1e-9)
     assert not np.any(cells["plasticStrain"][i2])
+
+
+def test_wrapped_for_the_gravity_stage_keeps_its_stress_and_stage(model):
+    # InitialStateAnalysisWrapper around Drucker-Prager: an elastic confined
+    # stage (stage 0), 'off' zeroes the displacements and keeps the stress;
+    # stage 1 then yields from that stress.
+    model.model("basic", "-ndm", 3, "-ndf", 3)
+    for i, x in enumerate(CUBE, start=1):
+        model.node(i, *[float(c) for c in x])
+        model.fix(i, int(x[0] == 0), int(x[1] == 0), int(x[2] == 0))
+    model.nDMaterial(*DP)
+    model.nDMaterial("InitialStateAnalysisWrapper", 2, 1, 3)
+    model.element("stdBrick", 1, *range(1, 9), 2)
+    model.updateMaterialStage("-material", 2, "-stage", 0)
+    model.InitialStateAnalysis("on")
+    model.timeSeries("Linear", 1)
+    model.pattern("Plain", 1, 1)
+    for n in (2, 3, 6, 7):
+        model.load(n, -2.5, 0.0, 0.0)
+    for n in (3, 4, 7, 8):
+        model.load(n, 0.0, -2.5, 0.0)
+    for n in (5, 6, 7, 8):
+        model.load(n, 0.0, 0.0, -5.0)  # sigma (-10, -10, -20): inside the cone
+    model.constraints("Transformation")
+    model.numberer("Plain")
+    model.system("UmfPack")
+    model.test("NormDispIncr", 1e-12, 25)
+    model.algorithm("Newton")
+    model.integrator("LoadControl", 0.5)
+    model.analysis("Static")
+    assert model.analyze(2) == 0
+    before = model.eleResponse(1, "material", "1", "stress")
+    np.testing.assert_allclose(before[:3], [-10.0, -10.0, -20.0], rtol=1e-10)
+    model.InitialStateAnalysis("off")
+    assert model.nodeDisp(7) == [0.0, 0.0, 0.0]
+    np.testing.assert_allclose(model.eleResponse(1, "material", "1", "stress"), before, rtol=1e-12, atol=1e-12)
+    model.loadConst("-time", 0.0)
+    model.updateMaterialStage("-material", 2, "-stage", 1)
+    # Axial compression to failure on the cone: q = (sqrt(2/3) 5 + 3 rho 10) / (sqrt(2/3) - rho).
+    model.timeSeries("Linear", 2)
+    model.pattern("Plain", 2, 2)
+    for n in (5, 6, 7, 8):
+        model.sp(n, 3, -0.004)
+    model.integrator("LoadControl", 0.1)
+    assert model.analyze(10) == 0
+    c = math.sqrt(2.0 / 3.0)
+    qf = (c * 5.0 + 3 * 0.398 * 10.0) / (c - 0.398)
+    s = model.eleResponse(1, "material", "1", "stress")
+    assert s[2] == pytest.approx(-10.0 - qf, rel=1e-9)
