@@ -373,6 +373,21 @@ TEST(DruckerPrager, ConsistentTangentMatchesFiniteDifferencesInEveryRegion) {
   }
 }
 
+TEST(DruckerPrager, ApexAndCutoffWithoutDilatancyOrHardening) {
+  // The cutoff plane cuts a hardening cone below its apex, so cone and
+  // cutoff meet on a circle (region 4); they meet at the apex only for
+  // perfect plasticity. With rhoBar = 0 nothing there depends on dgamma1:
+  // the deviator is cleared and I1 = T0; the stress is fixed (D = 0).
+  auto m = dp(0.3, 0.0);
+  m->setTrialStrain(v6(0.01, 0.01, 0.01, 1e-5, 0.0, 0.0));
+  EXPECT_EQ(lastReturn(*m), 5);
+  const double T0 = std::sqrt(2.0 / 3.0) * 5.0 / 0.3;
+  EXPECT_NEAR(3 * m->stress()(0), T0, 1e-12 * T0);
+  EXPECT_NEAR(m->stress()(3), 0.0, 1e-12);
+  EXPECT_LE(tangentError(*m, 1e-8), 1e-9);  // round-off of the return over 2h
+  EXPECT_LE(Matrix(m->tangent()).cwiseAbs().maxCoeff(), 1e-9);
+}
+
 TEST(DruckerPrager, PlaneStrainTangentMatchesFiniteDifferences) {
   auto m = dp(0.3, 0.1, 200.0, 0.6)->clone("PlaneStrain");
   ASSERT_TRUE(m);
