@@ -7,10 +7,12 @@ stresses are the material's answer on the path.
 - j2.brick: uniaxial stress, cyclic to +-5 yield strains, saturation and
   linear hardening.
 - j2.quad.PlaneStrain / j2.quad.PlaneStress: the same in a 2D quad.
-- dp.brick: confining pressure (loads), then axial compression past the
-  cone; associative and non-associative; then the same with the gravity
-  stage elastic (setParameter 'materialState' 0) and plastic after (2).
-- dp.quad: plane-strain biaxial compression.
+- dp.brick: confining pressure 10 (loads), then the top pushed down past
+  the cone; associative, non-associative, and with saturation and linear
+  isotropic hardening (theta 1); then non-associative with the confining
+  stage elastic (setParameter 'materialState' 0, the route OpenSeesPy
+  3.7.1 honours) and plastic after (2). 'state' is compared too.
+- dp.quad: the same three in plane-strain biaxial compression.
 """
 
 CUBE = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
@@ -46,7 +48,7 @@ def _quad(ops, material, kind):
     ops.element("quad", 1, 1, 2, 3, 4, 1.0, kind, material[1])
 
 
-def _record(ops, out, key, ndf_top, top_nodes, dof):
+def _record(ops, out, key, top_nodes, dof):
     """Per step: material 1 stress and strain, the top face reaction."""
     ops.reactions()
     out.setdefault(key + ".stress", []).append(ops.eleResponse(1, "material", "1", "stress"))
@@ -70,7 +72,7 @@ def _cyclic_top(ops, out, key, top_nodes, dof, amplitude, steps_per_leg=12):
     codes = []
     for _ in range(3 * steps_per_leg):
         codes.append(ops.analyze(1))
-        _record(ops, out, key, None, top_nodes, dof)
+        _record(ops, out, key, top_nodes, dof)
     out[key + ".codes"] = codes
 
 
@@ -151,5 +153,5 @@ def _shear_after_confinement(ops, out, key, top_nodes, dof, amplitude, stage):
     ops.integrator("LoadControl", 1.0)
     for _ in range(20):
         codes.append(ops.analyze(1))
-        _record(ops, out, key, None, top_nodes, dof)
+        _record(ops, out, key, top_nodes, dof)
     out[key + ".codes"] = codes
