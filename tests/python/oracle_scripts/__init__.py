@@ -46,4 +46,5 @@ SCRIPTS = (
     "explicit_difference",
     "earthquake_2d",
     "example3_cantilever",
+    "force_beam_iterations",
 )
