@@ -179,6 +179,8 @@ Interpreter::SolverInfo Interpreter::solverInfo() const {
     info.interior = c->numInterior();
     info.interface = c->numInterface();
     info.condensations = c->numCondensations();
+    info.interfaceFactorizations = c->numInterfaceFactorizations();
+    info.krylovIterations = c->numKrylovIterations();
   }
   return info;
 }

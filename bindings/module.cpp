@@ -30,6 +30,27 @@ std::vector<CommandArgs::Value> convertArgs(const std::string& command, const py
   std::size_t i = 0;
   for (const py::handle& h : args) {
     ++i;
+    PyObject* o = h.ptr();
+    // Fast paths for the exact built-in types (nearly every argument of a
+    // script): no attribute lookups, no temporary Python objects.
+    if (PyFloat_CheckExact(o)) {
+      values.emplace_back(PyFloat_AS_DOUBLE(o));
+      continue;
+    }
+    if (PyLong_CheckExact(o)) {
+      int overflow = 0;
+      const long long v = PyLong_AsLongLongAndOverflow(o, &overflow);
+      if (overflow) throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
+      values.emplace_back(v);
+      continue;
+    }
+    if (PyUnicode_CheckExact(o)) {
+      Py_ssize_t size = 0;
+      const char* text = PyUnicode_AsUTF8AndSize(o, &size);
+      if (!text) throw py::error_already_set();
+      values.emplace_back(std::string(text, static_cast<std::size_t>(size)));
+      continue;
+    }
     if (py::isinstance<py::str>(h)) {
       values.emplace_back(h.cast<std::string>());
     } else if (py::isinstance<py::bool_>(h)) {
@@ -93,6 +114,8 @@ PYBIND11_MODULE(_beamsolid, m) {
              d["interior"] = i.interior;
              d["interface"] = i.interface;
              d["condensations"] = i.condensations;
+             d["interface_factorizations"] = i.interfaceFactorizations;
+             d["krylov_iterations"] = i.krylovIterations;
              d["factorizations"] = i.factorizations;
              d["analyses"] = i.analyses;
              d["solver_seconds"] = i.solverSeconds;

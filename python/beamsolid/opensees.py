@@ -3,6 +3,8 @@
 An OpenSeesPy script runs after changing only its import line to
 ``import beamsolid.opensees as ops``.
 """
+import functools as _functools
+
 from . import model as _model
 from ._beamsolid import OpenSeesError, command_names as _command_names
 
@@ -11,10 +13,13 @@ _default = _model.Model()
 
 def _bind(name):
     method = getattr(_default, name)
-
-    def command(*args):
-        return method(*args)
-
+    if getattr(getattr(_model.Model, name, None), "_generic", False):
+        # A plain command: straight into the interpreter (a script calls node
+        # and element hundreds of thousands of times; each Python frame counts).
+        command = _functools.partial(_default._interp.call, name)
+    else:
+        def command(*args):
+            return method(*args)
     command.__name__ = name
     command.__doc__ = method.__doc__
     return command

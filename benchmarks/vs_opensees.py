@@ -1,0 +1,380 @@
+"""BeamSolid against OpenSeesPy on the contact scenes, the same scripts under both.
+
+The scripts in benchmarks/opensees_scripts are plain OpenSeesPy scripts; their first
+argument picks the import (`openseespy.opensees` or `beamsolid.opensees`), nothing else
+differs. Each run is a fresh process, one after the other; reported per run: wall and
+process CPU time (all threads, user + system) of the model building and of the analysis,
+Newton iterations, CPU time per iteration, peak memory (ru_maxrss of the process), and the
+answers' agreement with OpenSeesPy (head force per step, Q per friction coefficient).
+
+Sections (each can be run alone, results are merged into benchmarks/results/vs_opensees.json):
+  scenes   lateral pile (16 x 7 x 16: 256 BeamContact3D, 1792 bricks, gravity + 21 push steps)
+           and donut pullout (16 x 6 x 20: 336 BeamContact3D, 1920 bricks, mu 0.1 .. 1) under
+           OpenSeesPy with UmfPack and with Mumps, and under BeamSolid.
+  commands building 68,921 nodes and 64,000 stdBrick by commands: microseconds per command.
+  scaling  the lateral pile from about 1k to 200k equations (BeamSolid; OpenSeesPy with Mumps
+           as far as a size finishes within --opensees-limit seconds).
+
+    PYTHONPATH=python .venv/bin/python benchmarks/vs_opensees.py [--sections scenes commands scaling]
+        [--oracle /work/oracle-venv/bin/python] [--only opensees|beamsolid]
+
+The machine's load average is recorded with every run (timings on a shared machine:
+compare CPU times).
+"""
+import argparse
+import datetime
+import json
+import os
+import pathlib
+import subprocess
+import sys
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+SCRIPTS = ROOT / "benchmarks" / "opensees_scripts"
+OUT = ROOT / "benchmarks" / "results"
+RUNS = OUT / "vs_opensees.json"
+
+LATERAL_MESH = (16, 7, 16)
+LATERAL_STEPS = 21
+DONUT_MESH = (16, 6, 20)
+# (n_theta, n_radial, n_z) of the scaling series: about 1k, 3k, 6.5k, 9k, 26k, 62k, 123k, 204k equations.
+SCALING = [(8, 4, 8), (12, 6, 12), (16, 7, 16), (16, 9, 18), (24, 12, 27), (24, 20, 40), (24, 30, 54), (24, 40, 68)]
+
+BUILD_CHILD = r"""
+import json, sys, time
+program, n = sys.argv[1], int(sys.argv[2])
+if program == "opensees":
+    import openseespy.opensees as ops
+else:
+    import beamsolid.opensees as ops
+ops.wipe()
+ops.model("basic", "-ndm", 3, "-ndf", 3)
+ops.nDMaterial("ElasticIsotropic", 1, 1.0e4, 0.3)
+tag = lambda i, j, k: 1 + i + (n + 1) * (j + (n + 1) * k)
+c0, w0 = time.process_time(), time.perf_counter()
+for k in range(n + 1):
+    for j in range(n + 1):
+        for i in range(n + 1):
+            ops.node(tag(i, j, k), float(i), float(j), float(k))
+c1, w1 = time.process_time(), time.perf_counter()
+e = 1
+for k in range(n):
+    for j in range(n):
+        for i in range(n):
+            ops.element("stdBrick", e, tag(i, j, k), tag(i + 1, j, k), tag(i + 1, j + 1, k), tag(i, j + 1, k),
+                        tag(i, j, k + 1), tag(i + 1, j, k + 1), tag(i + 1, j + 1, k + 1), tag(i, j + 1, k + 1), 1)
+            e += 1
+c2, w2 = time.process_time(), time.perf_counter()
+nodes, bricks = (n + 1) ** 3, n ** 3
+print(json.dumps(dict(program=program, nodes=nodes, bricks=bricks, node_cpu_us=1e6 * (c1 - c0) / nodes,
+                      node_wall_us=1e6 * (w1 - w0) / nodes, brick_cpu_us=1e6 * (c2 - c1) / bricks,
+                      brick_wall_us=1e6 * (w2 - w1) / bricks)))
+"""
+
+
+# Runs a script as __main__ and then prints the process's own resource usage (all threads).
+WRAP = r"""
+import json, resource, runpy, sys
+sys.argv = sys.argv[1:]
+try:
+    runpy.run_path(sys.argv[0], run_name="__main__")
+finally:
+    u = resource.getrusage(resource.RUSAGE_SELF)
+    print("RUSAGE " + json.dumps(dict(cpu=u.ru_utime + u.ru_stime, sys=u.ru_stime, maxrss_mb=u.ru_maxrss / 1024.0)),
+          flush=True)
+"""
+
+
+def loadavg():
+    return round(os.getloadavg()[0], 2)
+
+
+def run_child(argv, env, timeout):
+    """Run a child; returns (its stdout, {wall, returncode, stderr, load before and after})."""
+    load0 = loadavg()
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
+        return None, dict(timeout=timeout, load_before=load0)
+    wall = time.perf_counter() - t0
+    return out, dict(wall=wall, returncode=proc.returncode, stderr=err[-3000:], load_before=load0,
+                     load_after=loadavg())
+
+
+def measured(argv, env, timeout):
+    """argv = [python, script, args...]: run the script through WRAP."""
+    out, meta = run_child([argv[0], "-c", WRAP, *argv[1:]], env, timeout)
+    if out is None:
+        return None, meta
+    usage = [ln for ln in out.splitlines() if ln.startswith("RUSAGE ")]
+    if usage:
+        u = json.loads(usage[-1][len("RUSAGE "):])
+        meta.update(process_cpu=u["cpu"], process_sys=u["sys"], peak_mb=u["maxrss_mb"])
+    lines = [ln for ln in out.splitlines() if ln.startswith("{")]
+    if meta["returncode"] != 0 or not lines:
+        meta["error"] = (meta.get("stderr") or "")[-1500:]
+        return None, meta
+    return json.loads(lines[-1]), meta
+
+
+def envs(oracle):
+    bs = dict(os.environ, PYTHONPATH=str(ROOT / "python"))
+    os_env = dict(os.environ)
+    os_env.pop("PYTHONPATH", None)
+    return {"beamsolid": (sys.executable, bs), "opensees": (oracle, os_env)}
+
+
+def load_runs():
+    return json.loads(RUNS.read_text()) if RUNS.exists() else {}
+
+
+def save_runs(runs):
+    RUNS.write_text(json.dumps(runs, indent=1))
+
+
+PROGRAMS = [("opensees", "UmfPack"), ("opensees", "Mumps"), ("beamsolid", "UmfPack")]
+
+
+def scenes(runs, oracle, only):
+    e = envs(oracle)
+    for scene, args in (("lateral_pile", [*map(str, LATERAL_MESH), str(LATERAL_STEPS)]),
+                        ("donut_pullout", [*map(str, DONUT_MESH)])):
+        for program, system in PROGRAMS:
+            if only and program != only:
+                continue
+            python, env = e[program]
+            if python is None:
+                continue
+            key = f"{scene}/{program}/{system}"
+            print(f"{key} ...", flush=True)
+            result, meta = measured([python, str(SCRIPTS / f"{scene}.py"), program, system, *args], env, 7200)
+            runs[key] = dict(result=result, meta=meta, date=datetime.datetime.now().isoformat(timespec="seconds"))
+            save_runs(runs)
+            print(f"  {meta.get('process_cpu', 0):.1f} s CPU, {meta.get('wall', 0):.1f} s wall, load "
+                  f"{meta['load_before']}", flush=True)
+
+
+def commands(runs, oracle, only):
+    e = envs(oracle)
+    import tempfile
+
+    build_script = pathlib.Path(tempfile.mkdtemp(prefix="vs_opensees_")) / "build_block.py"
+    build_script.write_text(BUILD_CHILD)
+    for program in ("opensees", "beamsolid"):
+        if only and program != only:
+            continue
+        python, env = e[program]
+        if python is None:
+            continue
+        best = None
+        for _ in range(3):  # the fastest of three (shared machine)
+            result, meta = measured([python, str(build_script), program, "40"], env, 1200)
+            if result and (best is None or result["node_cpu_us"] + result["brick_cpu_us"] <
+                           best[0]["node_cpu_us"] + best[0]["brick_cpu_us"]):
+                best = (result, meta)
+        runs[f"commands/{program}"] = dict(result=best[0], meta=best[1],
+                                           date=datetime.datetime.now().isoformat(timespec="seconds"))
+        save_runs(runs)
+
+
+def scaling(runs, oracle, only, limit, sizes):
+    e = envs(oracle)
+    for program, system in (("beamsolid", "UmfPack"), ("opensees", "Mumps")):
+        if only and program != only:
+            continue
+        python, env = e[program]
+        if python is None:
+            continue
+        for mesh in sizes:
+            key = f"scaling/{program}/{system}/{'x'.join(map(str, mesh))}"
+            previous = runs.get(key)
+            print(f"{key} ...", flush=True)
+            result, meta = measured([python, str(SCRIPTS / "lateral_pile.py"), program, system, *map(str, mesh),
+                                     str(LATERAL_STEPS)], env, limit if program == "opensees" else 3 * 3600)
+            runs[key] = dict(result=result, meta=meta, date=datetime.datetime.now().isoformat(timespec="seconds"))
+            save_runs(runs)
+            print(f"  {meta.get('process_cpu', 0):.1f} s CPU, {meta.get('wall', 0):.1f} s wall, peak "
+                  f"{meta.get('peak_mb', 0):.0f} MB, load {meta['load_before']}"
+                  f"{' TIMEOUT' if 'timeout' in meta else ''}", flush=True)
+            if result is None:
+                break  # larger sizes take longer still
+            del previous
+
+
+# --- tables ----------------------------------------------------------------------------------
+
+def _rel(a, b):
+    if not a or not b or len(a) != len(b):
+        return None
+    scale = max(abs(x) for x in b) or 1.0
+    return max(abs(x - y) for x, y in zip(a, b)) / scale
+
+
+def _scene_row(name, key, run):
+    r, m = run["result"], run["meta"]
+    if r is None:
+        return None
+    if "runs" in r:  # donut: several friction coefficients
+        its = sum(sum(x["iterations"]) for x in r["runs"])
+        build_cpu = sum(x["build_cpu"] for x in r["runs"])
+        analysis_cpu = sum(x["analysis_cpu"] for x in r["runs"])
+        analysis_wall = sum(x["analysis_wall"] for x in r["runs"])
+        equations = r["runs"][0]["equations"]
+    else:
+        its = sum(r["iterations"])
+        build_cpu, analysis_cpu, analysis_wall, equations = r["build_cpu"], r["analysis_cpu"], r["analysis_wall"], \
+            r["equations"]
+    return dict(name=name, key=key, equations=equations, iterations=its, total_cpu=m["process_cpu"],
+                total_wall=m["wall"], build_cpu=build_cpu, analysis_cpu=analysis_cpu, analysis_wall=analysis_wall,
+                per_iteration_ms=1e3 * analysis_cpu / max(its, 1), peak_mb=m["peak_mb"], load=m["load_before"])
+
+
+def _answers(scene, bs, ref):
+    if bs is None or ref is None:
+        return "-"
+    if scene == "lateral_pile":
+        d = _rel(bs["head_force"], ref["head_force"])
+        return f"head force {d:.1e}" if d is not None else "steps differ"
+    worst = 0.0
+    for a, b in zip(bs["runs"], ref["runs"]):
+        if a["Q"] is None or b["Q"] is None:
+            return "a run failed"
+        worst = max(worst, abs(a["Q"] - b["Q"]) / abs(b["Q"]))
+    return f"Q {worst:.1e}"
+
+
+def write_tables(runs):
+    lines = ["# BeamSolid against OpenSeesPy: the contact scenes, the command overhead, the scaling", "",
+             f"Written by `benchmarks/vs_opensees.py` ({datetime.date.today().isoformat()}); OpenSeesPy 3.7.1 "
+             "(`/work/oracle-venv/bin/python`), BeamSolid from this tree, the same scripts "
+             "(`benchmarks/opensees_scripts/*.py`, only the import differs), each run a fresh process, one after "
+             "the other, on a 2-core machine shared with other work: the load average (1 min) at each run's start "
+             "is in the tables. CPU = the process's user + system time over all its threads "
+             "(the comparison to trust on a loaded machine); wall in brackets.", ""]
+    lines += ["## 1. Contact scenes", "",
+              "| scene | program (system) | equations | Newton iterations | total CPU s (wall) | build CPU s | "
+              "analysis CPU s (wall) | CPU ms / iteration | peak MB | load | OpenSeesPy-Mumps CPU / this | "
+              "answers vs OpenSeesPy-UmfPack |",
+              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for scene in ("lateral_pile", "donut_pullout"):
+        mumps = runs.get(f"{scene}/opensees/Mumps")
+        ref = runs.get(f"{scene}/opensees/UmfPack")
+        for program, system in PROGRAMS:
+            key = f"{scene}/{program}/{system}"
+            if key not in runs:
+                continue
+            row = _scene_row(scene, key, runs[key])
+            if row is None:
+                lines.append(f"| {scene} | {program} ({system}) | failed: {runs[key]['meta'].get('error', '')[:80]} |")
+                continue
+            ratio = "-"
+            if mumps and mumps["result"]:
+                ratio = f"{mumps['meta']['process_cpu'] / row['total_cpu']:.1f}x"
+            answers = "reference" if key.endswith("opensees/UmfPack") else _answers(
+                scene, runs[key]["result"], ref["result"] if ref else None)
+            lines.append(f"| {scene} | {program} ({system}) | {row['equations']} | {row['iterations']} | "
+                         f"{row['total_cpu']:.1f} ({row['total_wall']:.1f}) | {row['build_cpu']:.2f} | "
+                         f"{row['analysis_cpu']:.1f} ({row['analysis_wall']:.1f}) | {row['per_iteration_ms']:.1f} | "
+                         f"{row['peak_mb']:.0f} | {row['load']} | {ratio} | {answers} |")
+    lines += ["", "Total = the whole process (interpreter start, imports, building, analysis). The answers: the "
+              "largest difference of the head force over the push steps relative to its largest value (lateral pile), "
+              "the largest relative difference of Q over the four friction coefficients (donut).", ""]
+    if any(k.startswith("commands/") for k in runs):
+        lines += ["## 2. Building a model by commands", "",
+                  "68,921 `node` and 64,000 `stdBrick` commands (a 40 x 40 x 40 brick block), the fastest of three "
+                  "runs; microseconds per command, CPU (wall).", "",
+                  "| program | us / node | us / stdBrick | load |", "|---|---:|---:|---:|"]
+        for program in ("opensees", "beamsolid"):
+            run = runs.get(f"commands/{program}")
+            if run and run["result"]:
+                r = run["result"]
+                lines.append(f"| {program} | {r['node_cpu_us']:.2f} ({r['node_wall_us']:.2f}) | "
+                             f"{r['brick_cpu_us']:.2f} ({r['brick_wall_us']:.2f}) | {run['meta']['load_before']} |")
+        lines.append("")
+    scale_rows = []
+    for key, run in runs.items():
+        if key.startswith("scaling/"):
+            _, program, system, mesh = key.split("/")
+            mesh = tuple(int(x) for x in mesh.split("x"))
+            r = run["result"]
+            scale_rows.append((program, mesh, r, run["meta"]))
+    if scale_rows:
+        lines += ["## 3. Scaling: the lateral pile from 1k to 200k equations", "",
+                  f"The lateral pile script with n_theta x n_radial x n_z soil bricks, gravity + {LATERAL_STEPS} push "
+                  "steps. OpenSeesPy with Mumps up to the first size that does not finish within the limit. Time "
+                  "per iteration: analysis CPU time (both stages) over all Newton iterations.", "",
+                  "| program | mesh | equations | contacts | iterations | analysis CPU s (wall) | CPU s / iteration | "
+                  "peak MB | load |", "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+        for program, mesh, r, meta in sorted(scale_rows, key=lambda x: (x[0], x[1][0] * x[1][1] * x[1][2])):
+            m = " x ".join(map(str, mesh))
+            if r is None:
+                why = f"not finished within {meta['timeout']} s" if "timeout" in meta else "failed"
+                lines.append(f"| {program} | {m} | | | | {why} | | | {meta['load_before']} |")
+                continue
+            its = sum(r["iterations"])
+            lines.append(f"| {program} | {m} | {r['equations']} | {r['contacts']} | {its} | "
+                         f"{r['analysis_cpu']:.1f} ({r['analysis_wall']:.1f}) | {r['analysis_cpu'] / max(its, 1):.3f} | "
+                         f"{meta['peak_mb']:.0f} | {meta['load_before']} |")
+        lines.append("")
+        _chart(scale_rows)
+        lines += ["![scaling](vs_opensees_scaling.png)", ""]
+    (OUT / "vs_opensees.md").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def _chart(rows):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for program, style in (("beamsolid", "o-"), ("opensees", "s--")):
+        pts = sorted((r["equations"], r["analysis_cpu"] / max(sum(r["iterations"]), 1), meta["peak_mb"])
+                     for p, _, r, meta in rows if p == program and r)
+        if not pts:
+            continue
+        label = "BeamSolid" if program == "beamsolid" else "OpenSeesPy (Mumps)"
+        a1.loglog([p[0] for p in pts], [p[1] for p in pts], style, label=label)
+        a2.loglog([p[0] for p in pts], [p[2] for p in pts], style, label=label)
+    a1.set_xlabel("equations")
+    a1.set_ylabel("CPU s per Newton iteration")
+    a2.set_xlabel("equations")
+    a2.set_ylabel("peak memory (MB)")
+    for a in (a1, a2):
+        a.grid(alpha=0.3, which="both")
+        a.legend()
+    fig.suptitle("Lateral pile: cost per Newton iteration and memory against size")
+    fig.tight_layout()
+    fig.savefig(OUT / "vs_opensees_scaling.png", dpi=110)
+    plt.close(fig)
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--sections", nargs="+", default=["scenes", "commands", "scaling"])
+    p.add_argument("--oracle", default=os.environ.get("BEAMSOLID_ORACLE_PYTHON", "/work/oracle-venv/bin/python"))
+    p.add_argument("--only", choices=["opensees", "beamsolid"])
+    p.add_argument("--opensees-limit", type=float, default=600.0)
+    p.add_argument("--sizes", type=int, default=len(SCALING), help="how many of the scaling sizes")
+    p.add_argument("--tables", action="store_true", help="only rewrite the tables from vs_opensees.json")
+    a = p.parse_args(argv)
+    oracle = a.oracle if a.oracle and os.path.exists(a.oracle) else None
+    runs = load_runs()
+    if not a.tables:
+        if "scenes" in a.sections:
+            scenes(runs, oracle, a.only)
+        if "commands" in a.sections:
+            commands(runs, oracle, a.only)
+        if "scaling" in a.sections:
+            scaling(runs, oracle, a.only, a.opensees_limit, SCALING[:a.sizes])
+    write_tables(runs)
+
+
+if __name__ == "__main__":
+    main()
