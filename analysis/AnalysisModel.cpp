@@ -71,7 +71,10 @@ void AnalysisModel::chooseSolver(LinearSolver& solver) {
     // benchmarks/condensation.py).
     // (lateral pile: 2.0x faster per iteration at 3,241 equations, interface
     // 937; 2.9x at 9,037, interface 1,837).
-    const bool pays = n >= 2000 && nB <= 5000 && nI >= nB;
+    // With the interface factorization reused across iterations (GMRES,
+    // CondensedSolver) the dense interface pays up to about 12,000 equations
+    // (two dense n_B^2 matrices: 2.3 GB there).
+    const bool pays = n >= 2000 && nB <= 12000 && nI >= nB;
     use = nI > 0 && nB <= 20000 && (mode == LinearSolver::Condensation::On || pays);
     if (!use) condensationNote_ = "no condensation (" + std::to_string(nI) + " of " + std::to_string(n) + " equations condensable)";
   }

@@ -3,7 +3,9 @@
 #include <cholmod.h>
 
 #include <algorithm>
+#include <ctime>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -23,6 +25,20 @@ namespace beamsolid {
 
 namespace {
 
+// The process's CPU time (all threads: a threaded BLAS counts in full).
+double now() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+// Adds the scope's CPU time to a counter.
+struct Timed {
+  double& total;
+  double start = now();
+  ~Timed() { total += now() - start; }
+};
+
 // Columns of A_II^-1 A_IB solved at once: a dense block of n_I x kBlock.
 constexpr int kBlock = 64;
 // Interfaces smaller than this are factored every time (a few ms).
@@ -34,6 +50,10 @@ constexpr int kThreadedInterface = 2000;
 constexpr int kRestart = 60;
 constexpr int kMaxKrylov = 240;
 constexpr double kKrylovTol = 1e-13;
+// Accepted when GMRES stagnates above kKrylovTol (round-off of an
+// ill-conditioned interface: contact multipliers next to soil stiffness);
+// Newton corrects an error this small in its next iteration like round-off.
+constexpr double kKrylovAccept = 1e-10;
 
 cholmod_dense denseView(double* x, int rows, int cols) {
   cholmod_dense d{};
@@ -151,6 +171,7 @@ void CondensedSolver::analyze(const SparseView& A) {
 }
 
 bool CondensedSolver::condense() {
+  Timed timed{condenseSeconds_};
   BlasThreads::Scope threads(nB_ >= kThreadedInterface ? BlasThreads::available() : 1);
   if (nI_ > 0) {
     cholmod_sparse s = symmetricView(nI_, iiStart_, iiRow_, iiValues_);
@@ -250,6 +271,7 @@ bool CondensedSolver::factorInterface() {
   for (std::size_t k = 0; k < schur_.size(); ++k) schur_[k] = -coupling_[k];
   for (std::size_t k = 0; k < bbSource_.size(); ++k) schur_[bbDense_[k]] += bbCurrent_[k];
   ++numInterfaceFactorizations_;
+  Timed timed{factorSeconds_};
   BlasThreads::Scope threads(nB_ >= kThreadedInterface ? BlasThreads::available() : 1);
   int info = 0;
   if (spd_) {
@@ -283,6 +305,7 @@ void CondensedSolver::applyReference(double* v) {
 // (modified Gram-Schmidt, Givens rotations); x = S_ref^-1 y. Saad, Iterative
 // Methods for Sparse Linear Systems, 2nd ed., algorithms 6.9 and 9.5.
 bool CondensedSolver::solveInterface(double* bB) {
+  Timed timed{interfaceSolveSeconds_};
   const int n = nB_;
   if (deltaValue_.empty()) {
     applyReference(bB);
@@ -368,8 +391,10 @@ bool CondensedSolver::solveInterface(double* bB) {
   numKrylovIterations_ += iterations;
   // A solve that took longer than a factorization is worth: refactor next
   // time (n_B^3 / 3 against about 20 n_B^2 per iteration at BLAS-2 speed).
+  // (Lateral pile, n_B = 1636, CPU of the whole run: limit n_B/125 5.5 s,
+  // n_B/62 5.0 s, n_B/33 5.4 s, n_B/17 7.8 s.)
   if (iterations > std::max(3, nB_ / 60)) refactorNext_ = true;
-  if (!(rnorm <= tol)) return false;
+  if (!(rnorm <= kKrylovAccept * bnorm)) return false;
   std::copy(y.begin(), y.end(), bB);
   applyReference(bB);
   return true;

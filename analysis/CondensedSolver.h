@@ -62,6 +62,11 @@ class CondensedSolver : public LinearSolver {
   // Dense factorizations of S, and GMRES iterations over all interface solves.
   int numInterfaceFactorizations() const { return numInterfaceFactorizations_; }
   long numKrylovIterations() const { return numKrylovIterations_; }
+  // CPU seconds (process, all threads) in the condensations, the dense
+  // factorizations of S and the interface solves (GMRES or direct), for benchmarks.
+  double condenseSeconds() const { return condenseSeconds_; }
+  double interfaceFactorSeconds() const { return factorSeconds_; }
+  double interfaceSolveSeconds() const { return interfaceSolveSeconds_; }
   Reuse reuses() const { return reuse_; }
 
  private:
@@ -100,6 +105,7 @@ class CondensedSolver : public LinearSolver {
   std::vector<double> deltaValue_;
   int numInterfaceFactorizations_ = 0;
   long numKrylovIterations_ = 0;
+  double condenseSeconds_ = 0.0, factorSeconds_ = 0.0, interfaceSolveSeconds_ = 0.0;
   std::vector<double> krylov_, hessenberg_;  // GMRES basis and work
 
   cholmod_common_struct* common_ = nullptr;

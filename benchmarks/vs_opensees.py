@@ -90,25 +90,36 @@ def loadavg():
     return round(os.getloadavg()[0], 2)
 
 
-def run_child(argv, env, timeout):
-    """Run a child; returns (its stdout, {wall, returncode, stderr, load before and after})."""
+def run_child(argv, env, timeout, cpu_limit=None):
+    """Run a child; returns (its stdout, {wall, returncode, stderr, load before and after}).
+    cpu_limit: seconds of CPU time the child may use (RLIMIT_CPU; on a machine shared with
+    other work a wall-clock limit would stop a run for others' load)."""
+    import resource
+
+    def limit():
+        if cpu_limit:
+            resource.setrlimit(resource.RLIMIT_CPU, (int(cpu_limit), int(cpu_limit) + 5))
+
     load0 = loadavg()
     t0 = time.perf_counter()
-    proc = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=limit)
     try:
         out, err = proc.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
         proc.kill()
         proc.communicate()
         return None, dict(timeout=timeout, load_before=load0)
+    if cpu_limit and proc.returncode in (-9, -24):  # SIGKILL / SIGXCPU: the CPU limit
+        return None, dict(timeout=cpu_limit, load_before=load0, wall=time.perf_counter() - t0)
     wall = time.perf_counter() - t0
     return out, dict(wall=wall, returncode=proc.returncode, stderr=err[-3000:], load_before=load0,
                      load_after=loadavg())
 
 
-def measured(argv, env, timeout):
+def measured(argv, env, timeout, cpu_limit=None):
     """argv = [python, script, args...]: run the script through WRAP."""
-    out, meta = run_child([argv[0], "-c", WRAP, *argv[1:]], env, timeout)
+    out, meta = run_child([argv[0], "-c", WRAP, *argv[1:]], env, timeout, cpu_limit)
     if out is None:
         return None, meta
     usage = [ln for ln in out.splitlines() if ln.startswith("RUSAGE ")]
@@ -134,7 +145,12 @@ def load_runs():
 
 
 def save_runs(runs):
-    RUNS.write_text(json.dumps(runs, indent=1))
+    """Merge into the file (several invocations may run at once, each adding its own keys)."""
+    merged = load_runs()
+    merged.update(runs)
+    tmp = RUNS.with_suffix(".tmp")
+    tmp.write_text(json.dumps(merged, indent=1))
+    tmp.replace(RUNS)
 
 
 PROGRAMS = [("opensees", "UmfPack"), ("opensees", "Mumps"), ("beamsolid", "UmfPack")]
@@ -195,7 +211,8 @@ def scaling(runs, oracle, only, limit, sizes):
             previous = runs.get(key)
             print(f"{key} ...", flush=True)
             result, meta = measured([python, str(SCRIPTS / "lateral_pile.py"), program, system, *map(str, mesh),
-                                     str(LATERAL_STEPS)], env, limit if program == "opensees" else 3 * 3600)
+                                     str(LATERAL_STEPS)], env, 4 * 3600,
+                                    cpu_limit=limit if program == "opensees" else None)
             runs[key] = dict(result=result, meta=meta, date=datetime.datetime.now().isoformat(timespec="seconds"))
             save_runs(runs)
             print(f"  {meta.get('process_cpu', 0):.1f} s CPU, {meta.get('wall', 0):.1f} s wall, peak "
@@ -313,7 +330,7 @@ def write_tables(runs):
         for program, mesh, r, meta in sorted(scale_rows, key=lambda x: (x[0], x[1][0] * x[1][1] * x[1][2])):
             m = " x ".join(map(str, mesh))
             if r is None:
-                why = f"not finished within {meta['timeout']} s" if "timeout" in meta else "failed"
+                why = f"not finished within {meta['timeout']:.0f} s CPU" if "timeout" in meta else "failed"
                 lines.append(f"| {program} | {m} | | | | {why} | | | {meta['load_before']} |")
                 continue
             its = sum(r["iterations"])
@@ -360,12 +377,13 @@ def main(argv=None):
     p.add_argument("--sections", nargs="+", default=["scenes", "commands", "scaling"])
     p.add_argument("--oracle", default=os.environ.get("BEAMSOLID_ORACLE_PYTHON", "/work/oracle-venv/bin/python"))
     p.add_argument("--only", choices=["opensees", "beamsolid"])
-    p.add_argument("--opensees-limit", type=float, default=600.0)
+    p.add_argument("--opensees-limit", type=float, default=600.0, help="CPU seconds an OpenSeesPy size may take")
+    p.add_argument("--programs", nargs="+", default=["beamsolid", "opensees"], help="scaling: which programs")
     p.add_argument("--sizes", type=int, default=len(SCALING), help="how many of the scaling sizes")
     p.add_argument("--tables", action="store_true", help="only rewrite the tables from vs_opensees.json")
     a = p.parse_args(argv)
     oracle = a.oracle if a.oracle and os.path.exists(a.oracle) else None
-    runs = load_runs()
+    runs = {} if not a.tables else load_runs()
     if not a.tables:
         if "scenes" in a.sections:
             scenes(runs, oracle, a.only)
@@ -373,7 +391,7 @@ def main(argv=None):
             commands(runs, oracle, a.only)
         if "scaling" in a.sections:
             scaling(runs, oracle, a.only, a.opensees_limit, SCALING[:a.sizes])
-    write_tables(runs)
+    write_tables(load_runs())
 
 
 if __name__ == "__main__":

@@ -181,6 +181,9 @@ Interpreter::SolverInfo Interpreter::solverInfo() const {
     info.condensations = c->numCondensations();
     info.interfaceFactorizations = c->numInterfaceFactorizations();
     info.krylovIterations = c->numKrylovIterations();
+    info.condenseSeconds = c->condenseSeconds();
+    info.interfaceFactorSeconds = c->interfaceFactorSeconds();
+    info.interfaceSolveSeconds = c->interfaceSolveSeconds();
   }
   return info;
 }

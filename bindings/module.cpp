@@ -116,6 +116,9 @@ PYBIND11_MODULE(_beamsolid, m) {
              d["condensations"] = i.condensations;
              d["interface_factorizations"] = i.interfaceFactorizations;
              d["krylov_iterations"] = i.krylovIterations;
+             d["condense_seconds"] = i.condenseSeconds;
+             d["interface_factor_seconds"] = i.interfaceFactorSeconds;
+             d["interface_solve_seconds"] = i.interfaceSolveSeconds;
              d["factorizations"] = i.factorizations;
              d["analyses"] = i.analyses;
              d["solver_seconds"] = i.solverSeconds;
