@@ -45,7 +45,7 @@ constexpr int kBlock = 64;
 constexpr int kMinReuse = 256;
 // From this interface size on the dense factorization and the condensation
 // run on every BLAS thread (a second or more of BLAS-3 work per call).
-constexpr int kThreadedInterface = 2000;
+constexpr int kThreadedInterface = 4000;
 // GMRES: restart length, iterations at most per solve, relative residual.
 constexpr int kRestart = 60;
 constexpr int kMaxKrylov = 240;

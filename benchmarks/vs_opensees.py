@@ -134,7 +134,8 @@ def measured(argv, env, timeout, cpu_limit=None):
 
 
 def envs(oracle):
-    bs = dict(os.environ, PYTHONPATH=str(ROOT / "python"))
+    # BEAMSOLID_BENCH_PYTHONPATH: a copy of python/ to run (the tree may be rebuilt meanwhile).
+    bs = dict(os.environ, PYTHONPATH=os.environ.get("BEAMSOLID_BENCH_PYTHONPATH", str(ROOT / "python")))
     os_env = dict(os.environ)
     os_env.pop("PYTHONPATH", None)
     return {"beamsolid": (sys.executable, bs), "opensees": (oracle, os_env)}
