@@ -3,8 +3,6 @@
 An OpenSeesPy script runs after changing only its import line to
 ``import beamsolid.opensees as ops``.
 """
-import functools as _functools
-
 from . import model as _model
 from ._beamsolid import OpenSeesError, command_names as _command_names
 
@@ -16,10 +14,11 @@ def _bind(name):
     if getattr(getattr(_model.Model, name, None), "_generic", False):
         # A plain command: straight into the interpreter (a script calls node
         # and element hundreds of thousands of times; each Python frame counts).
-        command = _functools.partial(_default._interp.call, name)
-    else:
-        def command(*args):
-            return method(*args)
+        return _default._interp.command(name)
+
+    def command(*args):
+        return method(*args)
+
     command.__name__ = name
     command.__doc__ = method.__doc__
     return command
