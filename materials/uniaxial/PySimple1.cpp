@@ -106,14 +106,12 @@ double PySimple1::seriesTangent(double nearTangent, const GapForce& gap) const {
 }
 
 void PySimple1::setTrialStrain(double y, double rate) {
-  trial_.rate = rate;
   if (y == committed_.y) {
     // No movement: the committed state, with its tangent re-evaluated there.
     nearField_.setTrialToCommitted();
     drag_.setTrialToCommitted();
-    const double rateKept = rate;
     trial_ = committed_;
-    trial_.rate = rateKept;
+    trial_.rate = rate;
     const GapForce gf = gapForce(committed_.gap, nearField_.committed().y);
     trial_.tangent = seriesTangent(nearField_.tangent(), gf);
     return;
@@ -138,6 +136,7 @@ void PySimple1::setTrialStrain(double y, double rate) {
   const GapForce gf = gapForce(g, nearY);
   drag_.setTrial(gf.clipped);
   trial_.y = y;
+  trial_.rate = rate;
   trial_.p = p;
   trial_.gap = g;
   trial_.closeRight = gf.closeRight;

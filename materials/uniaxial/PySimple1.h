@@ -24,10 +24,12 @@ namespace beamsolid {
 //    stiffness it has there, which keeps the closure finite.
 // Each trial solves the series for p exactly (nested safeguarded Newton).
 // The tangent is the series tangent with the near-field, closure and drag
-// tangents each kept above 0.01 pult / y50 (as OpenSees reports it). A dashpot c acts on the
-// far-field share of the velocity: stress = p + c v t / Kf, t the tangent,
-// and the stress is bounded by 0.999999999999 pult in magnitude; the damping
-// tangent is c t / Kf.
+// tangents each kept above 0.01 pult / y50 (as OpenSees reports it). A
+// dashpot c acts on the far-field share s of the velocity v: stress = p + c v s
+// with s = (ye - ye_c) / (y - y_c), the far field's share of the increment
+// from the committed state (tangent / Kf when there is none, i.e. after
+// commitState), bounded by 0.999999999999 pult in magnitude; the damping
+// tangent is c s. All of this is what OpenSees does (docs/pile_springs.md).
 class PySimple1 : public UniaxialMaterial {
  public:
   PySimple1(int tag, int soilType, double pult, double y50, double Cd, double c);

@@ -20,7 +20,8 @@ namespace beamsolid {
 //  - gap: a bilinear closure spring (1000 qult / z50 closed, zg < 0, and
 //    1.000002e-6 qult / z50 open) in parallel with a drag spring (SoilDrag)
 //    of capacity suction * qult that gives the uplift resistance.
-// The tangent keeps the near-field tangent above 1e-4 qult / z50; at rest it
+// The tangent keeps the near-field and drag tangents above 1e-4 qult / z50
+// (as OpenSees reports it; no suction, no drag); at rest it
 // is OpenSees' initial tangent (closure 100 qult / z50). The dashpot and the
 // stress bound are those of PySimple1.
 class QzSimple1 : public UniaxialMaterial {

@@ -14,7 +14,8 @@ namespace beamsolid {
 // (0.6, 0.85, 2.0504) for tzType 2 (Mosher 1984, piles in sand): with these
 // t = tult / 2 at z = z50. The tangent keeps the near-field tangent above
 // 1e-4 tult / z50 (as OpenSees reports it); the dashpot c acts on the
-// far-field share of the velocity (stress = t + c v tangent / Kf, bounded
+// far-field share of the velocity as in PySimple1 (stress = t + c v s,
+// s = (ze - ze_c) / (z - z_c), or tangent / Kf without an increment; bounded
 // by 0.999999999999 tult).
 class TzSimple1 : public UniaxialMaterial {
  public:
