@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <string>
 
 #include "core/CommandArgs.h"
@@ -153,7 +154,7 @@ std::unique_ptr<UniaxialMaterial> buildQzSimple1(CommandArgs& args, Domain&) {
   const int qzType = args.nextInt("qzType");
   const double qult = args.nextDouble("qult");
   const double z50 = args.nextDouble("Z50");
-  const double suction = args.done() ? 0.0 : args.nextDouble("suction");
+  double suction = args.done() ? 0.0 : args.nextDouble("suction");
   const double c = args.done() ? 0.0 : args.nextDouble("c");
   args.expectEnd();
   if (qzType != 1 && qzType != 2)
@@ -161,9 +162,15 @@ std::unique_ptr<UniaxialMaterial> buildQzSimple1(CommandArgs& args, Domain&) {
               std::to_string(qzType));
   if (!(qult > 0.0)) args.fail("qult must be positive, got " + std::to_string(qult));
   if (!(z50 > 0.0)) args.fail("Z50 must be positive, got " + std::to_string(z50));
-  // OpenSees documents 0 <= suction <= 0.1 (and quietly clamps larger values).
-  if (!(suction >= 0.0 && suction <= 0.1))
-    args.fail("suction must lie in [0, 0.1] (uplift resistance suction*qult), got " + std::to_string(suction));
+  // OpenSees documents 0 <= suction <= 0.1; OpenSeesPy takes a larger value as 0.1 with a
+  // warning (and a script that passes one must run here too), a negative one as none.
+  if (std::isnan(suction)) args.fail("suction must be a number in [0, 0.1], got nan");
+  if (suction > 0.1) {
+    std::cerr << "WARNING uniaxialMaterial QzSimple1 " << tag << ": suction " << suction
+              << " is more than 0.1; 0.1 is used\n";
+    suction = 0.1;
+  }
+  if (suction < 0.0) suction = 0.0;
   if (!(c >= 0.0)) args.fail("c (dashpot) must not be negative, got " + std::to_string(c));
   return std::make_unique<QzSimple1>(tag, qzType, qult, z50, suction, c);
 }
