@@ -25,7 +25,8 @@ def main(argv=None):
     parser.add_argument("--out", default=None, help="output directory (default: NAME_output)")
     parser.add_argument("--adaptive", action="store_true", help="cut the step on failure, grow it back")
     parser.add_argument("--steps", type=int, default=None, help="steps (per quarter cycle when cyclic)")
-    parser.add_argument("--interface", choices=("contact", "penalty", "tied"), default=None)
+    parser.add_argument("--interface", choices=("contact", "penalty", "tied", "py"), default=None,
+                        help="seismic_pile: py is the beam on p-y springs; the scene also runs tied and py beside it")
     parser.add_argument("--head-mass", type=float, default=None, help="seismic_pile: mass at the pile head (t)")
     parser.add_argument("--scale", type=float, default=None, help="seismic_pile: factor on the record")
     parser.add_argument("--protocol", choices=("monotonic", "cyclic"), default=None)

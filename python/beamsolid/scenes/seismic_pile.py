@@ -19,8 +19,11 @@ of ratio zeta at the first two natural frequencies of the soil column,
     omega_n = (2 n - 1) pi Vs / (2 H),   Vs = sqrt(G / rho)   (n = 1, 2),
     alphaM = 2 zeta omega_1 omega_2 / (omega_1 + omega_2),  betaK = 2 zeta / (omega_1 + omega_2).
 Interfaces: 'contact' (BeamContact3D with Lagrange multipliers, Coulomb friction mu: gapping and
-sliding), 'tied' (every pile-surface soil node rigidLink'ed to its pile node), or 'none' (no
-pile: the free-field box).
+sliding), 'tied' (every pile-surface soil node rigidLink'ed to its pile node), 'py' (no soil box:
+the beam pile on p-y springs, PySimple1 after Matlock's soft clay from the undrained strength
+su, whose far ends move with the free field: the 1D shear column's relative displacement at each
+pile node's depth, imposed by sp in a Plain pattern under the same UniformExcitation), or 'none'
+(no pile: the free-field box).
 """
 import math
 import pathlib
@@ -34,6 +37,8 @@ from ..geostatic import geostatic_stage
 from ..groundmotion import read_record
 from ..mesh import graded, ogrid
 from ..model import Model
+from ..springs import SoftClay, pile_springs
+from ..boundaries import Tags
 
 RECORD = str(pathlib.Path(__file__).resolve().parents[3] / "examples" / "records" / "synthetic_kt_seed16.acc")
 
@@ -50,6 +55,7 @@ TRANSF = 1
 TS_MOTION, PAT_MOTION = 10, 10
 FIRST_SOIL_NODE = 1001
 FIRST_CONTACT = 200001  # element tags; multiplier node tags alike
+PY_FIRST = 300001  # p-y spring nodes, elements and materials
 
 
 @dataclass(frozen=True)
@@ -75,6 +81,12 @@ class SeismicPile:
     # PGA 0.3 g at about 1.3 s: Numerics.overlap_limit).
     scale: float = 0.05
     duration: float = 3.0
+    # The p-y model only (interface 'py'): Matlock (1970) soft-clay curves from the undrained
+    # strength su (E / su = 500 for the soil above) and eps50, with PySimple1's drag Cd. The
+    # soil box stays elastic: at the default motion its free-field shear stress stays far below su.
+    su: float = 100.0
+    eps50: float = 0.005
+    py_drag: float = 0.3
 
     @property
     def soil_rho(self):
@@ -118,7 +130,7 @@ class SeismicPile:
 @dataclass(frozen=True)
 class Numerics:
     level: str = "coarse"
-    interface: str = "contact"  # "contact" | "penalty" (BeamContact3Dp) | "tied" | "none" (the soil box alone)
+    interface: str = "contact"  # "contact" | "penalty" (BeamContact3Dp) | "tied" | "py" | "none" (the soil box alone)
     gap_tol: float = 1e-8  # BeamContact3D gapTol (m): a released node closes again below it
     force_tol: float = 1e-8  # BeamContact3D forceTol (kN): a node is released when lambda <= -forceTol
     penalty_factor: float = 1e3  # "penalty": penalty = penalty_factor * E_soil * R (kN/m per contact node)
@@ -135,8 +147,8 @@ class Numerics:
     def __post_init__(self):
         if self.level not in LEVELS:
             raise ValueError(f"seismic_pile: level must be one of {sorted(LEVELS)}, got {self.level!r}")
-        if self.interface not in ("contact", "penalty", "tied", "none"):
-            raise ValueError("seismic_pile: interface must be 'contact', 'penalty', 'tied' or 'none', "
+        if self.interface not in ("contact", "penalty", "tied", "py", "none"):
+            raise ValueError("seismic_pile: interface must be 'contact', 'penalty', 'tied', 'py' or 'none', "
                              f"got {self.interface!r}")
         if not self.dt > 0:
             raise ValueError(f"seismic_pile: dt must be positive, got {self.dt}")
@@ -166,6 +178,7 @@ class SeismicResult:
     stop_reason: str = None
     n_equations: int = 0
     n_contacts: int = 0
+    n_springs: int = 0  # p-y spring elements (interface 'py')
     timings: dict = field(default_factory=dict)
 
     @property
@@ -213,6 +226,11 @@ class SeismicPileModel:
         self.m = m if m is not None else Model()
         self.pile_nodes, self.beams, self.iface, self.mesh = [], [], None, None
         self.contact_soil, self.base_nodes, self.ties = [], [], []
+        self.springs, self.free_field = None, None
+
+    @property
+    def soil_box(self):
+        return self.n.interface != "py"
 
     def build(self):
         p, n, m = self.p, self.n, self.m
@@ -235,6 +253,12 @@ class SeismicPileModel:
                           "-mass", p.pile_density * p.area)
             for tag in self.pile_nodes:
                 m.fix(tag, 1, 1, 1, 1, 1, 1)  # gravity stage: the pile is held
+        if not self.soil_box:
+            self.springs = pile_springs(m, Tags(node=PY_FIRST, element=PY_FIRST, material=PY_FIRST),
+                                        self.pile_nodes, 2.0 * p.pile_radius,
+                                        [SoftClay(0.0, p.depth, p.su, p.gamma, eps50=p.eps50, Cd=p.py_drag)],
+                                        lateral_dofs=(1, 2), axial=False, tip=False)
+            return self
         m.model("basic", "-ndm", 3, "-ndf", 3)
         m.nDMaterial("ElasticIsotropic", SOIL_ELASTIC, p.soil_E, p.soil_nu, p.soil_rho)
         m.nDMaterial("InitialStateAnalysisWrapper", SOIL, SOIL_ELASTIC, 3)
@@ -267,6 +291,13 @@ class SeismicPileModel:
 
     def gravity(self):
         p, m = self.p, self.m
+        if not self.soil_box:
+            # No soil: nothing to bring to its geostatic state (the pile has no self weight). The
+            # free field the springs follow is the 1D column, run with the same gravity stage.
+            times, disp, accel = run_column(p, Numerics(level=self.n.level, interface="none", dt=self.n.dt),
+                                            all_levels=True)
+            self.free_field = (times, disp, accel)
+            return
         self.geostatic_state = geostatic_stage(
             m, soil_elements=self.mesh.elements, gamma=p.gamma, K0=p.K0,
             contact_materials=[CONTACT] if self.iface is not None else [], tol=self.n.tol, max_iter=self.n.max_iter,
@@ -286,6 +317,8 @@ class SeismicPileModel:
         self.record_times = np.arange(len(self.record)) * dt_record
         m.timeSeries("Path", TS_MOTION, "-dt", dt_record, "-filePath", p.record, "-factor", p.g * p.scale)
         m.pattern("UniformExcitation", PAT_MOTION, 1, "-accel", TS_MOTION)
+        if self.springs is not None:
+            self._drive_springs()
         alpha_m, beta_k = p.rayleigh
         m.rayleigh(alpha_m, beta_k, 0.0, 0.0)
         m.constraints("Transformation")
@@ -295,6 +328,22 @@ class SeismicPileModel:
         m.algorithm("Newton")
         m.integrator("Newmark", 0.5, 0.25)
         m.analysis("Transient")
+
+    def _drive_springs(self):
+        """Each p-y spring's far end follows the free field along x at its pile node's level: its x
+        fix becomes an sp of a Plain pattern whose Path series is the column's relative displacement
+        there (the same relative frame as the UniformExcitation that shakes the pile)."""
+        m = self.m
+        times, disp, _ = self.free_field
+        for k, row in enumerate(self.springs.rows):
+            level = self.pile_nodes.index(row["pile_node"])
+            ts = PY_FIRST + k
+            m.remove("sp", row["fixed_node"], 1)
+            # A uniform path ends before its last point (as OpenSees): one more sample keeps the
+            # last step's value.
+            m.timeSeries("Path", ts, "-dt", self.n.dt, "-values", *disp[level], disp[level][-1])
+            m.pattern("Plain", ts, ts)
+            m.sp(row["fixed_node"], 1, 1.0)
 
     def ground_accel(self, t):
         """The base acceleration the Path series gives at time t (linear between samples), m/s^2."""
@@ -324,8 +373,13 @@ class SeismicPileModel:
         r.time.append(t)
         r.ground_accel.append(ag)
         r.iterations.append(iterations)
-        r.surface_disp.append(m.nodeDisp(self.surface_node, 1))
-        r.surface_accel.append(m.nodeAccel(self.surface_node, 1) + ag)
+        if self.soil_box:
+            r.surface_disp.append(m.nodeDisp(self.surface_node, 1))
+            r.surface_accel.append(m.nodeAccel(self.surface_node, 1) + ag)
+        else:  # the free field's surface (the 1D column at the same step)
+            k = len(r.time) - 1
+            r.surface_disp.append(self.free_field[1][0][k])
+            r.surface_accel.append(self.free_field[2][0][k] + ag)
         if self.pile_nodes:
             head = self.pile_nodes[0]
             r.head_disp.append(m.nodeDisp(head, 1))
@@ -369,12 +423,13 @@ def run(problem=SeismicPile(), numerics=Numerics(), m=None, out=None, record=Fal
 
     With record=True and `out`: head_accel_abs.out (absolute, via -timeSeries), pile_disp.out,
     pile_forces.out and seismic_pile.pvd (disp, vel, accel) in `out`."""
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     model = SeismicPileModel(problem, numerics, m).build()
-    r = SeismicResult(problem=problem, numerics=numerics, n_contacts=len(model.iface.elements) if model.iface else 0)
+    r = SeismicResult(problem=problem, numerics=numerics, n_contacts=len(model.iface.elements) if model.iface else 0,
+                      n_springs=len(model.springs.elements) if model.springs else 0)
     t1 = time.perf_counter()
     model.gravity()
-    t2 = time.perf_counter()
+    t2, c2 = time.perf_counter(), time.process_time()
     model.shake()
     if record:
         if out is None:
@@ -399,21 +454,25 @@ def run(problem=SeismicPile(), numerics=Numerics(), m=None, out=None, record=Fal
             break
         if on_step is not None:
             on_step(model, t)
-    t3 = time.perf_counter()
+    t3, c3 = time.perf_counter(), time.process_time()
     r.n_equations = int(model.m.systemSize())
     r.z = [model.m.nodeCoord(t, 3) for t in model.pile_nodes]
     r.moment_envelope = envelope
     # the shaking stage's factorizations and solves (BeamSolid only; OpenSeesPy does not say)
     solver = model.m.solver_info()["solver_seconds"] if hasattr(model.m, "solver_info") else None
     model.m.wipe()
-    r.timings = dict(build=t1 - t0, gravity=t2 - t1, shaking=t3 - t2, total=time.perf_counter() - t0, solver=solver)
+    # cpu_*: this process's CPU time (all its threads), steadier than wall time on a shared machine
+    r.timings = dict(build=t1 - t0, gravity=t2 - t1, shaking=t3 - t2, total=time.perf_counter() - t0, solver=solver,
+                     cpu_shaking=c3 - c2, cpu_total=time.process_time() - c0)
     return r
 
 
-def run_column(problem=SeismicPile(), numerics=Numerics(interface="none"), width=1.0):
+def run_column(problem=SeismicPile(), numerics=Numerics(interface="none"), width=1.0, all_levels=False):
     """The 1D shear column the periodic box reduces to without a pile: one stdBrick per layer
     (width x width in plan, the box's levels), its four vertical edges tied like the box's sides,
-    run alike (gravity, record, Rayleigh, Newmark). Returns (times, top displacement along x)."""
+    run alike (gravity, record, Rayleigh, Newmark). Returns (times, top displacement along x), or
+    with all_levels (times, displacements, accelerations), each a list over the levels (top
+    first) of the history along x, relative to the bedrock."""
     n_z = LEVELS[numerics.level][2]
     levels = layer_levels(problem, n_z)
     m = Model()
@@ -449,14 +508,19 @@ def run_column(problem=SeismicPile(), numerics=Numerics(interface="none"), width
     m.algorithm("Newton")
     m.integrator("Newmark", 0.5, 0.25)
     m.analysis("Transient")
-    times, disp = [0.0], [m.nodeDisp(1, 1)]
+    level_nodes = [1 + 4 * k for k in range(len(levels))]
+    times = [0.0]
+    disp = [[m.nodeDisp(n, 1)] for n in level_nodes]
+    accel = [[m.nodeAccel(n, 1)] for n in level_nodes]
     for k in range(1, int(round(problem.duration / numerics.dt)) + 1):
         if m.analyze(1, numerics.dt) != 0:
             raise RuntimeError(f"run_column: step {k} failed")
         times.append(k * numerics.dt)
-        disp.append(m.nodeDisp(1, 1))
+        for i, n in enumerate(level_nodes):
+            disp[i].append(m.nodeDisp(n, 1))
+            accel[i].append(m.nodeAccel(n, 1))
     m.wipe()
-    return times, disp
+    return (times, disp, accel) if all_levels else (times, disp[0])
 
 
 def lumped_masses(m, elements, rho):
@@ -483,7 +547,7 @@ def lumped_masses(m, elements, rho):
 # =====================================================================================
 # The scene: python -m beamsolid.scenes seismic_pile --level coarse|medium|fine
 # =====================================================================================
-def _plots(out, main, tied):
+def _plots(out, main, tied, others=()):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -492,7 +556,8 @@ def _plots(out, main, tied):
     files = []
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 6.0), sharex=True)
     a1.plot(main.time, main.ground_accel, color="0.6", lw=0.8, label="bedrock")
-    for r, style, name in ((main, "-", main.numerics.interface), (tied, "--", "tied")):
+    runs = [(main, "-", main.numerics.interface), (tied, "--", "tied")] + [(r, ":", r.numerics.interface) for r in others]
+    for r, style, name in runs:
         a1.plot(r.time, r.head_accel, style, lw=1.0, label=f"pile head, {name}")
         a2.plot(r.time, [1e3 * u for u in r.head_disp], style, lw=1.0, label=name)
     a1.set_ylabel("absolute acceleration (m/s^2)")
@@ -508,8 +573,9 @@ def _plots(out, main, tied):
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(4.5, 5.5))
-    for r, style, name in ((main, "o-", main.numerics.interface), (tied, "s--", "tied")):
-        ax.plot(r.moment_envelope, r.z, style, ms=3, label=name)
+    for r, style, name in runs:
+        ax.plot(r.moment_envelope, r.z, style + ("o" if style == "-" else "s" if style == "--" else "^"), ms=3,
+                label=name)
     ax.set_xlabel("max |M_y| over time (kNm)")
     ax.set_ylabel("z (m)")
     ax.grid(alpha=0.3)
@@ -538,9 +604,10 @@ def _plots(out, main, tied):
 
 
 def scene(level="coarse", out="seismic_pile_output", interface="contact", steps=None, head_mass=0.0, scale=None,
-          problem=None):
-    """The tied reference, then the chosen interface with recorders; print the table, save plots.
-    steps: time steps over the window (default: dt = 0.01 s). Returns (result, tied result, files)."""
+          problem=None, py=True):
+    """The chosen interface with recorders, the tied reference and (py=True) the beam on p-y
+    springs; print the table, save plots. steps: time steps over the window (default: dt = 0.01 s).
+    Returns (result, tied result, files); the p-y result is `scene.py_result`."""
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
@@ -549,6 +616,8 @@ def scene(level="coarse", out="seismic_pile_output", interface="contact", steps=
     dt = Numerics.dt if steps is None else problem.duration / steps
     main = run(problem, Numerics(level=level, interface=interface, dt=dt), out=out, record=True)
     tied = main if interface == "tied" else run(problem, Numerics(level=level, interface="tied", dt=dt))
+    others = [run(problem, Numerics(level=level, interface="py", dt=dt))] if py and interface != "py" else []
+    scene.py_result = others[0] if others else (main if interface == "py" else None)
     n_theta, n_radial, n_z = LEVELS[level]
     a_m, b_k = problem.rayleigh
     print(f"seismic_pile ({level}: soil box {n_theta} x {n_radial} x {n_z} stdBricks around the pile, {n_z} pile "
@@ -560,17 +629,22 @@ def scene(level="coarse", out="seismic_pile_output", interface="contact", steps=
           f"{dt:g}; Newmark (1/2, 1/4); rayleigh {a_m:.4g} {b_k:.4g} ({100 * problem.damping:g} % at modes 1, 2)")
     print(f"\n{'model':>8s}{'peak u_head mm':>16s}{'peak a_head':>13s}{'max |M| kNm':>13s}{'at z':>7s}"
           f"{'peak gap mm':>13s}{'max open':>10s}{'iters':>7s}{'wall s':>8s}")
-    for r in ((tied, main) if main is not tied else (main,)):
+    results = ((tied, main) if main is not tied else (main,)) + tuple(others)
+    for r in results:
         k = max(range(len(r.moment_envelope)), key=lambda i: r.moment_envelope[i])
         print(f"{r.numerics.interface:>8s}{1e3 * r.peak_head_disp:16.3f}{max(abs(a) for a in r.head_accel):13.3f}"
               f"{r.moment_envelope[k]:13.1f}{r.z[k]:7.2f}{1e3 * r.peak_gap:13.4f}{max(r.n_open):10d}"
               f"{sum(r.iterations):7d}{r.timings['total']:8.1f}")
-    for r in ((tied, main) if main is not tied else (main,)):
+    if others or interface == "py":
+        print(f"  py: the beam on {scene.py_result.n_springs} zeroLength elements of x and y PySimple1 springs (Matlock soft clay, "
+              f"su = {problem.su:g}, eps50 = {problem.eps50:g}, Cd = {problem.py_drag:g}) whose ends follow the "
+              "free-field column")
+    for r in results:
         if not r.converged:
             print(f"  {r.numerics.interface}: STOPPED at t = {r.failed_at:.3f} s: {r.stop_reason}")
     files = [out / "head_accel_abs.out", out / "pile_disp.out", out / "pile_forces.out", out / "seismic_pile.pvd"]
     try:
-        files += _plots(out, main, tied)
+        files += _plots(out, main, tied, others)
     except ImportError:
         print("matplotlib not installed: no plots")
     print(f"\nwrote {', '.join(f.name for f in files)} in {out}; wall time {time.perf_counter() - t0:.1f} s")
