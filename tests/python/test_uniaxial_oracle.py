@@ -128,6 +128,9 @@ def _cases():
         "Hysteretic-all": (("Hysteretic", 1, *env3, 0.6, 0.2, 0.05, 0.05, 0.3), hyst_path),
         "Hysteretic-two-points": (("Hysteretic", 1, *env2, 0.7, 0.4, 0.02, 0.03, 0.2), hyst_path),
         "Hysteretic-softening": (("Hysteretic", 1, *soft, 0.8, 0.5, 0.01, 0.01, 0.1), hyst_path),
+        "Concrete04": (("Concrete04", 1, -30.0, -0.002, -0.015, 25000.0, 3.0, 0.001, 0.1), conc + tension),
+        "Concrete04-crushing": (("Concrete04", 1, -30.0, -0.002, -0.0045, 27000.0, 2.5, 0.0008), tension + conc),
+        "Concrete04-no-tension": (("Concrete04", 1, 34.5, 0.0025, 0.02, 29000.0), conc + tension),
         "ElasticBilin": (("ElasticBilin", 1, E0, 0.1 * E0, 2.0 * ey), steel),
         "ElasticBilin-asymmetric": (("ElasticBilin", 1, E0, -0.05 * E0, 3.0 * ey, 0.5 * E0, 0.2 * E0, -1.5 * ey),
                                     steel),
@@ -146,7 +149,7 @@ def _cases():
     def _round_off(path, at):
         base = path[at]
         return path[:at + 1] + [base + d for d in (1e-17, -1e-17, 1e-16, -1e-16, 1.5e-16, -2e-16)]
-    for name, at in (("Steel01", 5), ("Concrete01", 12), ("Concrete02", 12), ("Hysteretic", 12),
+    for name, at in (("Steel01", 5), ("Concrete01", 12), ("Concrete02", 12), ("Concrete04", 12), ("Hysteretic", 12),
                      ("MultiLinear", 40), ("ElasticPP", 5), ("Hardening", 5)):
         mat, path = out[name] if name in out else (("ElasticPP", 1, E0, ey), steel)
         out[name + "-round-off"] = (mat, _round_off(path, at))
