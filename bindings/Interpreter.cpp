@@ -61,6 +61,7 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"wipeAnalysis", &Interpreter::wipeAnalysis},
       {"eigen", &Interpreter::eigen},
       {"modalProperties", &Interpreter::modalProperties},
+      {"responseSpectrumAnalysis", &Interpreter::responseSpectrumAnalysis},
       {"printA", &Interpreter::printA},
       {"printB", &Interpreter::printB},
       {"testIter", &Interpreter::testIter},

@@ -105,6 +105,7 @@ class Interpreter {
   Result wipeAnalysis(CommandArgs&);
   Result eigen(CommandArgs&);
   Result modalProperties(CommandArgs&);
+  Result responseSpectrumAnalysis(CommandArgs&);
   Result printA(CommandArgs&);
   Result printB(CommandArgs&);
   Result testIter(CommandArgs&);
@@ -196,6 +197,8 @@ class Interpreter {
   std::chrono::steady_clock::time_point timerStart_;
   bool timerRunning_ = false;
   std::vector<double> eigenvalues_;
+  // modalProperties has run since the last eigen (responseSpectrumAnalysis needs it, as OpenSees).
+  bool haveModalProperties_ = false;
   // A copy of the material under testUniaxialMaterial; setStrain commits it.
   std::unique_ptr<UniaxialMaterial> testMaterial_;
 };

@@ -47,4 +47,5 @@ SCRIPTS = (
     "earthquake_2d",
     "example3_cantilever",
     "force_beam_iterations",
+    "response_spectrum",
 )
