@@ -28,6 +28,16 @@ LinearSolver::Condensation condensationMode(const LinearSolver& solver) {
   return LinearSolver::Condensation::Auto;
 }
 
+// BEAMSOLID_INTERFACE_REUSE=off: factor the interface afresh every time
+// instead of GMRES with an earlier factorization (CondensedSolver); =always:
+// reuse on interfaces of any size (tests: small models take that path too).
+CondensedSolver::Reuse interfaceReuse() {
+  const char* env = std::getenv("BEAMSOLID_INTERFACE_REUSE");
+  if (env && (!std::strcmp(env, "off") || !std::strcmp(env, "0"))) return CondensedSolver::Reuse::Off;
+  if (env && !std::strcmp(env, "always")) return CondensedSolver::Reuse::Always;
+  return CondensedSolver::Reuse::Auto;
+}
+
 }  // namespace
 
 void AnalysisModel::chooseSolver(LinearSolver& solver) {
@@ -61,7 +71,10 @@ void AnalysisModel::chooseSolver(LinearSolver& solver) {
     // benchmarks/condensation.py).
     // (lateral pile: 2.0x faster per iteration at 3,241 equations, interface
     // 937; 2.9x at 9,037, interface 1,837).
-    const bool pays = n >= 2000 && nB <= 5000 && nI >= nB;
+    // With the interface factorization reused across iterations (GMRES,
+    // CondensedSolver) the dense interface pays up to about 12,000 equations
+    // (two dense n_B^2 matrices: 2.3 GB there).
+    const bool pays = n >= 2000 && nB <= 12000 && nI >= nB;
     use = nI > 0 && nB <= 20000 && (mode == LinearSolver::Condensation::On || pays);
     if (!use) condensationNote_ = "no condensation (" + std::to_string(nI) + " of " + std::to_string(n) + " equations condensable)";
   }
@@ -70,16 +83,21 @@ void AnalysisModel::chooseSolver(LinearSolver& solver) {
     system_.setSolver(&solver);
     return;
   }
+  const auto reuse = solver.requiresSPD() ? CondensedSolver::Reuse::Off : interfaceReuse();
   if (!condensed_ || condensed_->interior() != interior || condensed_->requestedName() != solver.requestedName() ||
-      condensed_->requiresSPD() != solver.requiresSPD()) {
+      condensed_->requiresSPD() != solver.requiresSPD() || condensed_->reuses() != reuse) {
     condensed_ = std::make_unique<CondensedSolver>(solver.requestedName(), solver.backend(), solver.requiresSPD(),
-                                                   std::move(interior));
+                                                   std::move(interior), reuse);
     system_.resetSolverState();
-    int nI = 0;
-    for (char c : condensed_->interior()) nI += c;
-    condensationNote_ = "condensing " + std::to_string(nI) + " of " + std::to_string(n) +
-                        " equations (constant-tangent elements only), interface of " + std::to_string(n - nI);
+    condensationNote_ = "condensing " + std::to_string(condensed_->numInteriorEquations()) + " of " +
+                        std::to_string(n) + " equations (constant-tangent elements only), interface of " +
+                        std::to_string(n - condensed_->numInteriorEquations());
     std::cerr << "system " << solver.requestedName() << ": " << condensationNote_ << "\n";
+  } else {
+    // The same partition as before (a new analysis of the same model): say so again.
+    condensationNote_ = "condensing " + std::to_string(condensed_->numInteriorEquations()) + " of " +
+                        std::to_string(n) + " equations (constant-tangent elements only), interface of " +
+                        std::to_string(n - condensed_->numInteriorEquations());
   }
   condensedActive_ = true;
   system_.setSolver(condensed_.get());

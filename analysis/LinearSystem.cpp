@@ -1,5 +1,7 @@
 #include "analysis/LinearSystem.h"
 
+#include "core/BlasThreads.h"
+
 #include "analysis/DofMap.h"
 
 #include <chrono>
@@ -30,6 +32,9 @@ double seconds() { return std::chrono::duration<double>(std::chrono::steady_cloc
 
 bool LinearSystem::factor() {
   const double start = seconds();
+  // One BLAS thread unless a solver asks for more around large dense work
+  // (core/BlasThreads.h: idle threads spin between the small calls).
+  BlasThreads::Scope threads(1);
   const SparseView A = view();
   if (!analyzed_) {
     solver_->analyze(A);
@@ -44,6 +49,7 @@ void LinearSystem::solve() { solve(b_, x_); }
 
 void LinearSystem::solve(const Vector& rhs, Vector& out) {
   const double start = seconds();
+  BlasThreads::Scope threads(1);
   out.resize(n_);
   solver_->solve(rhs.data(), out.data());
   solverSeconds_ += seconds() - start;

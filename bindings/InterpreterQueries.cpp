@@ -179,6 +179,11 @@ Interpreter::SolverInfo Interpreter::solverInfo() const {
     info.interior = c->numInterior();
     info.interface = c->numInterface();
     info.condensations = c->numCondensations();
+    info.interfaceFactorizations = c->numInterfaceFactorizations();
+    info.krylovIterations = c->numKrylovIterations();
+    info.condenseSeconds = c->condenseSeconds();
+    info.interfaceFactorSeconds = c->interfaceFactorSeconds();
+    info.interfaceSolveSeconds = c->interfaceSolveSeconds();
   }
   return info;
 }

@@ -3,6 +3,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <deque>
+#include <map>
+#include <memory>
 #include <optional>
 
 #include "bindings/Interpreter.h"
@@ -24,12 +27,34 @@ namespace {
 // Python arguments -> command values. bool/int/numpy integers -> integer,
 // float/numpy floats -> number, str -> string; anything else is an error
 // naming the command and the position.
-std::vector<CommandArgs::Value> convertArgs(const std::string& command, const py::args& args) {
+std::vector<CommandArgs::Value> convertArgs(const std::string& command, PyObject* const* items, std::size_t count) {
   std::vector<CommandArgs::Value> values;
-  values.reserve(args.size());
+  values.reserve(count);
   std::size_t i = 0;
-  for (const py::handle& h : args) {
+  for (std::size_t k = 0; k < count; ++k) {
     ++i;
+    PyObject* o = items[k];
+    const py::handle h(o);
+    // Fast paths for the exact built-in types (nearly every argument of a
+    // script): no attribute lookups, no temporary Python objects.
+    if (PyFloat_CheckExact(o)) {
+      values.emplace_back(PyFloat_AS_DOUBLE(o));
+      continue;
+    }
+    if (PyLong_CheckExact(o)) {
+      int overflow = 0;
+      const long long v = PyLong_AsLongLongAndOverflow(o, &overflow);
+      if (overflow) throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
+      values.emplace_back(v);
+      continue;
+    }
+    if (PyUnicode_CheckExact(o)) {
+      Py_ssize_t size = 0;
+      const char* text = PyUnicode_AsUTF8AndSize(o, &size);
+      if (!text) throw py::error_already_set();
+      values.emplace_back(std::string(text, static_cast<std::size_t>(size)));
+      continue;
+    }
     if (py::isinstance<py::str>(h)) {
       values.emplace_back(h.cast<std::string>());
     } else if (py::isinstance<py::bool_>(h)) {
@@ -53,6 +78,10 @@ std::vector<CommandArgs::Value> convertArgs(const std::string& command, const py
   return values;
 }
 
+std::vector<CommandArgs::Value> convertArgs(const std::string& command, const py::args& args) {
+  return convertArgs(command, PySequence_Fast_ITEMS(args.ptr()), static_cast<std::size_t>(args.size()));
+}
+
 py::object toPython(const Interpreter::Result& r) {
   return std::visit(
       [](const auto& v) -> py::object {
@@ -63,11 +92,53 @@ py::object toPython(const Interpreter::Result& r) {
       r);
 }
 
+PyObject* openSeesErrorType = nullptr;
+
+// One command of one interpreter as a plain CPython function (vectorcall, no
+// argument tuple, no pybind11 dispatch): beamsolid.opensees binds its
+// module-level commands this way, since scripts call node and element
+// hundreds of thousands of times. `self` is (interpreter object, capsule with
+// its address, command name); the tuple keeps the interpreter alive.
+PyObject* fastCommand(PyObject* self, PyObject* const* args, Py_ssize_t nargs) {
+  auto* interpreter = static_cast<Interpreter*>(PyCapsule_GetPointer(PyTuple_GET_ITEM(self, 1), nullptr));
+  if (!interpreter) return nullptr;
+  Py_ssize_t size = 0;
+  const char* text = PyUnicode_AsUTF8AndSize(PyTuple_GET_ITEM(self, 2), &size);
+  if (!text) return nullptr;
+  try {
+    const std::string name(text, static_cast<std::size_t>(size));
+    auto values = convertArgs(name, args, static_cast<std::size_t>(nargs));
+    return toPython(interpreter->call(name, std::move(values))).release().ptr();
+  } catch (const OpenSeesError& e) {
+    PyErr_SetString(openSeesErrorType, e.what());
+  } catch (py::error_already_set& e) {
+    e.restore();
+  } catch (const std::exception& e) {
+    PyErr_SetString(PyExc_RuntimeError, e.what());
+  }
+  return nullptr;
+}
+
+// One method definition per command name (CPython keeps a pointer to it for
+// the function's lifetime, and the name is the function's __name__).
+PyMethodDef* fastCommandDef(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<PyMethodDef>> defs;
+  static std::deque<std::string> names;
+  auto& def = defs[name];
+  if (!def) {
+    names.push_back(name);
+    def = std::make_unique<PyMethodDef>(PyMethodDef{names.back().c_str(),
+                                                    reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(fastCommand)),
+                                                    METH_FASTCALL, "OpenSeesPy command; see docs/commands.md."});
+  }
+  return def.get();
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_beamsolid, m) {
   m.doc() = "BeamSolid: OpenSees-style finite elements with beam-solid contact";
-  py::register_exception<OpenSeesError>(m, "OpenSeesError", PyExc_RuntimeError);
+  openSeesErrorType = py::register_exception<OpenSeesError>(m, "OpenSeesError", PyExc_RuntimeError).ptr();
 
   py::class_<Interpreter>(m, "Interpreter")
       .def(py::init<>())
@@ -79,6 +150,15 @@ PYBIND11_MODULE(_beamsolid, m) {
             return toPython(self.call(name, std::move(values)));
           },
           py::arg("name"))
+      .def(
+          "command",
+          [](py::object self, const std::string& name) {
+            py::tuple state = py::make_tuple(self, py::capsule(self.cast<Interpreter*>()), name);
+            PyObject* f = PyCFunction_NewEx(fastCommandDef(name), state.ptr(), nullptr);
+            if (!f) throw py::error_already_set();
+            return py::reinterpret_steal<py::object>(f);
+          },
+          py::arg("name"), "The command `name` of this interpreter as a fast callable (beamsolid.opensees).")
       .def("close_recorders", &Interpreter::closeRecorders)
       .def("last_error", &Interpreter::lastError)
       .def("solver_info",
@@ -93,6 +173,11 @@ PYBIND11_MODULE(_beamsolid, m) {
              d["interior"] = i.interior;
              d["interface"] = i.interface;
              d["condensations"] = i.condensations;
+             d["interface_factorizations"] = i.interfaceFactorizations;
+             d["krylov_iterations"] = i.krylovIterations;
+             d["condense_seconds"] = i.condenseSeconds;
+             d["interface_factor_seconds"] = i.interfaceFactorSeconds;
+             d["interface_solve_seconds"] = i.interfaceSolveSeconds;
              d["factorizations"] = i.factorizations;
              d["analyses"] = i.analyses;
              d["solver_seconds"] = i.solverSeconds;

@@ -26,8 +26,11 @@ Domain::~Domain() {
 
 void Domain::addNode(std::unique_ptr<Node> node, const std::string& context) {
   const int tag = node->tag();
-  if (nodes_.count(tag)) throw OpenSeesError(context + ": node " + std::to_string(tag) + " already exists");
-  nodes_.emplace(tag, std::move(node));
+  // Scripts number nodes upwards: a tag above every other goes in at the end
+  // without a search.
+  if (!nodes_.empty() && nodes_.rbegin()->first >= tag && nodes_.count(tag))
+    throw OpenSeesError(context + ": node " + std::to_string(tag) + " already exists");
+  nodes_.emplace_hint(nodes_.end(), tag, std::move(node));
   const bool usageCurrent = nodeUsageStamp_ == modelStamp_;
   touch();
   if (usageCurrent) nodeUsageStamp_ = modelStamp_;  // a new node is used by nothing yet
@@ -65,7 +68,7 @@ void Domain::removeNode(int tag, const std::string& context) {
 
 void Domain::addElement(std::unique_ptr<Element> element, const std::string& context) {
   const int tag = element->tag();
-  if (elements_.count(tag))
+  if (!elements_.empty() && elements_.rbegin()->first >= tag && elements_.count(tag))
     throw OpenSeesError(context + ": element " + std::to_string(tag) + " already exists");
   if (!element->supportsSpace(spaceDim()))
     throw OpenSeesError(context + ": element type " + element->className() + " does not work in a " +
@@ -75,7 +78,7 @@ void Domain::addElement(std::unique_ptr<Element> element, const std::string& con
   // (connect() may have refreshed the usage cache; this element is not in it yet.)
   const bool usageCurrent = nodeUsageStamp_ == modelStamp_;
   const Element& added = *element;
-  elements_.emplace(tag, std::move(element));
+  elements_.emplace_hint(elements_.end(), tag, std::move(element));
   touch();
   if (usageCurrent) {
     for (int t : added.nodeTags()) ++nodeUsage_[t].elements;

@@ -155,20 +155,26 @@ void StdBrick::formStiffness(bool initial, Matrix24& K) const {
   }
 }
 
+StdBrick::Matrix24& StdBrick::buffer(std::unique_ptr<Matrix24>& m) {
+  if (!m) m = std::make_unique<Matrix24>();
+  return *m;
+}
+
 MatrixView StdBrick::tangentStiff() {
   // A linear material's tangent never changes: form it once.
-  if (constantTangentValid_) return viewOf(constantTangent_);
-  formStiffness(false, stiffness_);
+  if (constantTangentValid_) return viewOf(*constantTangent_);
   if (hasConstantTangent()) {
-    constantTangent_ = stiffness_;
+    formStiffness(false, buffer(constantTangent_));
     constantTangentValid_ = true;
+    return viewOf(*constantTangent_);
   }
-  return viewOf(stiffness_);
+  formStiffness(false, buffer(stiffness_));
+  return viewOf(*stiffness_);
 }
 
 MatrixView StdBrick::initialStiff() {
-  formStiffness(true, stiffness_);
-  return viewOf(stiffness_);
+  formStiffness(true, buffer(stiffness_));
+  return viewOf(*stiffness_);
 }
 
 VectorView StdBrick::resistingForce() {
@@ -190,19 +196,20 @@ VectorView StdBrick::resistingForce() {
 MatrixView StdBrick::massMatrix() {
   // Consistent, rho * integral(N_a N_b dV) on the 2x2x2 rule, as OpenSees'
   // stdBrick (checked against OpenSeesPy's periods).
-  mass_.setZero();
+  Matrix24& mass = buffer(mass_);
+  mass.setZero();
   const double rho = materials_[0]->density();
-  if (rho == 0.0) return viewOf(mass_);
+  if (rho == 0.0) return viewOf(mass);
   for (int g = 0; g < kGaussPoints; ++g) {
     const Eigen::Matrix<double, 8, 1> n =
         shapeFunctions(gaussCoordinate(g, 0), gaussCoordinate(g, 1), gaussCoordinate(g, 2));
     for (int a = 0; a < kNodes; ++a)
       for (int b = 0; b < kNodes; ++b) {
         const double m = rho * weightedDetJ_[g] * n(a) * n(b);
-        for (int i = 0; i < 3; ++i) mass_(3 * a + i, 3 * b + i) += m;
+        for (int i = 0; i < 3; ++i) mass(3 * a + i, 3 * b + i) += m;
       }
   }
-  return viewOf(mass_);
+  return viewOf(mass);
 }
 
 void StdBrick::commitState() {

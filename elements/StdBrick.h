@@ -105,11 +105,14 @@ class StdBrick : public Element {
   Eigen::Matrix<double, kNodes, 1> nodalVolume_ = Eigen::Matrix<double, kNodes, 1>::Zero();
 
   Vector24 displacement_ = Vector24::Zero();
-  Matrix24 stiffness_ = Matrix24::Zero();
+  // The 24 x 24 matrices are allocated on first use (4.6 KB each): a model of
+  // linear bricks needs only the constant tangent, a static one no mass.
+  static Matrix24& buffer(std::unique_ptr<Matrix24>& m);
+  std::unique_ptr<Matrix24> stiffness_;
   // The tangent of a linear material, kept (invalidated by anything that may change it).
-  Matrix24 constantTangent_ = Matrix24::Zero();
+  std::unique_ptr<Matrix24> constantTangent_;
   bool constantTangentValid_ = false;
-  Matrix24 mass_ = Matrix24::Zero();
+  std::unique_ptr<Matrix24> mass_;
   Vector24 force_ = Vector24::Zero();
 };
 

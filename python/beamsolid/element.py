@@ -18,9 +18,15 @@ Matrices and vectors are in the element's dof order: node by node, all dofs
 of each node. Python runs in the Newton loop, so such elements are for
 prototypes and tests, not production models.
 """
-import numpy as np
-
 from ._beamsolid import register_element as _register
+
+
+def _np():
+    # NumPy on first use: `import beamsolid` alone (every OpenSeesPy script)
+    # then neither pays its import nor starts its BLAS threads.
+    import numpy
+
+    return numpy
 
 
 class Element:
@@ -43,7 +49,7 @@ class Element:
         self.disps = None
 
     def _connect(self, coords, ndf):
-        self.coords = np.asarray(coords, dtype=float)
+        self.coords = _np().asarray(coords, dtype=float)
         self.ndf = list(ndf)
         self.setup()
 
@@ -56,6 +62,7 @@ class Element:
 
     def update(self, disps):
         """Trial displacements of the nodes (list of arrays)."""
+        np = _np()
         self.disps = [np.asarray(d, dtype=float) for d in disps]
 
     def tangent(self):

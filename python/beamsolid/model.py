@@ -27,6 +27,7 @@ def _make_command(name):
     command.__name__ = name
     command.__qualname__ = f"Model.{name}"
     command.__doc__ = f"OpenSeesPy command ``{name}``; see docs/commands.md."
+    command._generic = True  # opensees.py binds such commands straight to the interpreter
     return command
 
 

@@ -11,6 +11,10 @@ _default = _model.Model()
 
 def _bind(name):
     method = getattr(_default, name)
+    if getattr(getattr(_model.Model, name, None), "_generic", False):
+        # A plain command: straight into the interpreter (a script calls node
+        # and element hundreds of thousands of times; each Python frame counts).
+        return _default._interp.command(name)
 
     def command(*args):
         return method(*args)

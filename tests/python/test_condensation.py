@@ -100,6 +100,7 @@ def _run_mixed(condense, steps=4, **kw):
     return np.array(states), iters, info
 
 
+@pytest.mark.parametrize("reuse", ["off", "always"])
 @pytest.mark.parametrize("integrator, algorithm, handler", [
     (("LoadControl", 0.25), ("Newton",), ("Transformation",)),
     (("LoadControl", 0.25), ("ModifiedNewton",), ("Transformation",)),
@@ -108,7 +109,10 @@ def _run_mixed(condense, steps=4, **kw):
     (("DisplacementControl", 100, 1, 0.01), ("Newton",), ("Transformation",)),
     (("ArcLength", 0.05, 1.0), ("Newton",), ("Transformation",)),
 ])
-def test_mixed_model_condensed_equals_plain(integrator, algorithm, handler):
+def test_mixed_model_condensed_equals_plain(monkeypatch, integrator, algorithm, handler, reuse):
+    """reuse 'always': the interface is solved by GMRES with an earlier factorization of S
+    wherever it can (CondensedSolver), 'off': S factored at every factorization."""
+    monkeypatch.setenv("BEAMSOLID_INTERFACE_REUSE", reuse)
     plain, plain_iters, plain_info = _run_mixed(False, integrator=integrator, algorithm=algorithm, handler=handler)
     cond, cond_iters, info = _run_mixed(True, integrator=integrator, algorithm=algorithm, handler=handler)
     assert not plain_info["condensed"]
@@ -118,6 +122,10 @@ def test_mixed_model_condensed_equals_plain(integrator, algorithm, handler):
     # the bricks never change: condensed once for the whole run
     assert info["condensations"] == 1
     assert info["factorizations"] == plain_info["factorizations"]
+    if reuse == "off":
+        assert info["interface_factorizations"] == info["factorizations"] and info["krylov_iterations"] == 0
+    else:  # an unchanged interface block is solved with the factors it has
+        assert info["interface_factorizations"] < info["factorizations"]
 
 
 def test_recondenses_exactly_when_a_constant_tangent_or_the_pattern_changes():
@@ -227,10 +235,12 @@ def test_bad_condense_option_names_it():
         m.system("UmfPack", "-condense", "sometimes")
 
 
+@pytest.mark.parametrize("reuse", ["off", "on"])
 @pytest.mark.parametrize("interface", ["contact", "penalty"])
-def test_lateral_pile_condensed_equals_plain(monkeypatch, interface):
+def test_lateral_pile_condensed_equals_plain(monkeypatch, interface, reuse):
     numerics = lateral_pile.Numerics(level="coarse", interface=interface, steps=4)
     results = {}
+    monkeypatch.setenv("BEAMSOLID_INTERFACE_REUSE", reuse)
     for mode in ("off", "on"):
         monkeypatch.setenv("BEAMSOLID_CONDENSE", mode)
         results[mode] = lateral_pile.run(lateral_pile.LateralPile(), numerics)
@@ -252,3 +262,102 @@ def test_donut_pullout_condensed_equals_plain(monkeypatch):
     on, off = results["on"], results["off"]
     assert _close(on.head_force, off.head_force)
     assert _close(on.head_disp, off.head_disp)
+
+
+def _pullout(m):
+    """test_pile_interface's chained pullout: a pile pulled 1.1 through a confined soil donut, every
+    soil node handed over to the next segment on the way."""
+    import test_pile_interface as tpi
+    from beamsolid import contact
+
+    m.wipe()
+    pile, donut, iface = tpi.build_pullout(m, levels=(1.8, 0.2), n_z=4, n_theta=8)
+    tpi.confine(m, donut)
+    tpi.start_pull(m, pile[-1], 1.1)
+    tpi.analysis(m, 1.0 / 22)
+    states = []
+    for step in range(22):
+        assert m.analyze(1) == 0, m.last_error()
+        states.append(_state(m))
+    f = contact.interface_forces(m, iface)
+    info = m.solver_info()
+    m.wipe()
+    return np.array(states), f.hand_overs, info
+
+
+@pytest.mark.parametrize("reuse", ["off", "always"])
+def test_hand_overs_condensed_equal_plain(monkeypatch, reuse):
+    monkeypatch.setenv("BEAMSOLID_INTERFACE_REUSE", reuse)
+    m = beamsolid.Model()
+    monkeypatch.setenv("BEAMSOLID_CONDENSE", "off")
+    plain, plain_handed, _ = _pullout(m)
+    monkeypatch.setenv("BEAMSOLID_CONDENSE", "on")
+    cond, handed, info = _pullout(m)
+    assert info["condensed"] and info["interior"] > 0
+    assert plain_handed == handed > 0
+    assert _close(cond, plain)
+    if reuse == "always":  # the contacts' rows change: GMRES with an earlier factorization of S
+        assert info["krylov_iterations"] > 0 and info["interface_factorizations"] < info["factorizations"]
+
+
+def _fiber_pile(m, condense, algorithm="Newton"):
+    """A fiber pile (forceBeamColumn, Steel01 fibers of a circular section that yield) in an elastic
+    stdBrick O-grid, tied to the soil's surface nodes by rigidLink 'beam' (the tip pinned on the fixed
+    base); the head pushed sideways."""
+    from beamsolid import mesh
+
+    m.wipe()
+    m.model("basic", "-ndm", 3, "-ndf", 3)
+    m.nDMaterial("ElasticIsotropic", 1, 2.0e4, 0.3)
+    levels = [0.0, -1.0, -2.0, -3.0, -4.0]
+    soil = mesh.ogrid(m, pile_radius=0.4, outer_size=4.0, outer="circle", n_theta=8, n_radial=3, radial_ratio=1.8,
+                      levels=levels, material_tag=1, first_node=1001, first_element=1001)
+    mesh.fix_soil_boundary(m, soil)
+    m.model("basic", "-ndm", 3, "-ndf", 6)
+    pile = list(range(1, len(levels) + 1))
+    for tag, z in zip(pile, levels):
+        m.node(tag, 0.0, 0.0, z)
+    m.uniaxialMaterial("Steel01", 1, 2.0e3, 2.0e6, 0.02)
+    m.section("Fiber", 1, "-GJ", 1.0e5)
+    m.patch("circ", 1, 8, 2, 0.0, 0.0, 0.2, 0.4, 0.0, 360.0)
+    m.geomTransf("Linear", 1, 1.0, 0.0, 0.0)
+    m.beamIntegration("Lobatto", 1, 1, 3)
+    for e in range(len(levels) - 1):
+        m.element("forceBeamColumn", e + 1, pile[e], pile[e + 1], 1, 1)
+    for k in range(len(levels) - 1):  # the base ring is fixed
+        for s in soil.surfaces[0][k]:
+            m.rigidLink("beam", pile[k], s)
+    m.fix(pile[-1], 1, 1, 1, 0, 0, 1)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(pile[0], 400.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    m.constraints("Transformation")
+    m.numberer("RCM")
+    m.system("UmfPack", "-condense", "on" if condense else "off")
+    m.test("NormDispIncr", 1e-10, 50)
+    m.algorithm(algorithm)
+    m.integrator("LoadControl", 0.25)
+    m.analysis("Static")
+    states, iters = [], []
+    for _ in range(4):
+        assert m.analyze(1) == 0, m.last_error()
+        states.append(_state(m))
+        iters.append(m.testIter())
+    info = m.solver_info()
+    m.wipe()
+    return np.array(states), iters, info
+
+
+@pytest.mark.parametrize("reuse", ["off", "always"])
+@pytest.mark.parametrize("algorithm", ["Newton", "NewtonLineSearch"])
+def test_fiber_pile_in_elastic_soil_condensed_equals_plain(monkeypatch, reuse, algorithm):
+    monkeypatch.setenv("BEAMSOLID_INTERFACE_REUSE", reuse)
+    m = beamsolid.Model()
+    plain, plain_iters, _ = _fiber_pile(m, False, algorithm)
+    cond, iters, info = _fiber_pile(m, True, algorithm)
+    assert info["condensed"] and info["interior"] > info["interface"] > 0
+    assert info["condensations"] == 1
+    assert iters == plain_iters and max(iters) > 2  # the fibers yield: a nonlinear pile
+    assert _close(cond, plain)
+    if reuse == "always":
+        assert info["krylov_iterations"] > 0 and info["interface_factorizations"] < info["factorizations"]
