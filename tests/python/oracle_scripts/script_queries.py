@@ -17,8 +17,9 @@ def _typed(value):
 
 
 def _frame_2d(ops, out):
+    # (getNDM right after wipe is left out: OpenSees' wipe keeps the last model
+    # builder, so it answers that builder's ndm, 0 only in a fresh process.)
     ops.wipe()
-    out["getNDM before model"] = ops.getNDM()
     ops.model("basic", "-ndm", 2, "-ndf", 3)
     for tag, x, y in ((1, 0, 0), (2, 5, 0), (3, 0, 3), (4, 5, 3)):
         ops.node(tag, float(x), float(y))
