@@ -31,6 +31,9 @@ class ModalProperties {
   std::map<std::string, std::vector<double>> toDict() const;
   // The report of '-print' and '-file'.
   void report(std::ostream& os) const;
+  // Gamma of mode (0-based) in direction (0-based, in the order above).
+  double participationFactor(int mode, int direction) const { return factor_.at(mode).at(direction); }
+  int numDirections() const { return static_cast<int>(directions_.size()); }
 
  private:
   int ndm_;

@@ -108,6 +108,7 @@ class Interpreter {
   Result wipeAnalysis(CommandArgs&);
   Result eigen(CommandArgs&);
   Result modalProperties(CommandArgs&);
+  Result responseSpectrumAnalysis(CommandArgs&);
   Result printA(CommandArgs&);
   Result printB(CommandArgs&);
   Result testIter(CommandArgs&);
@@ -174,6 +175,40 @@ class Interpreter {
   Result mpNodes(CommandArgs&, const char* command, bool constrained);
   Result setNodeState(CommandArgs&, const char* command, int which);
 
+  // --- queries and commands of scripts and post-processors (InterpreterScripting.cpp) ---
+  Result getNDM(CommandArgs&);
+  Result getNumElements(CommandArgs&);
+  Result getCrdTransfTags(CommandArgs&);
+  Result getPatterns(CommandArgs&);
+  Result getNodeLoadTags(CommandArgs&);
+  Result getNodeLoadData(CommandArgs&);
+  Result getEleLoadTags(CommandArgs&);
+  Result getEleLoadData(CommandArgs&);
+  Result getEleLoadClassTags(CommandArgs&);
+  Result getEleClassTags(CommandArgs&);
+  Result classType(CommandArgs&);
+  Result getConstrainedDOFs(CommandArgs&);
+  Result getRetainedDOFs(CommandArgs&);
+  Result setPrecision(CommandArgs&);
+  Result setStartNodeTag(CommandArgs&);
+  Result setNumThreads(CommandArgs&);
+  Result getNumThreads(CommandArgs&);
+  Result numFact(CommandArgs&);
+  Result totalCPU(CommandArgs&);
+  Result solveCPU(CommandArgs&);
+  Result accelCPU(CommandArgs&);
+  Result reset(CommandArgs&);
+  Result parameter(CommandArgs&);
+  Result addToParameter(CommandArgs&);
+  Result updateParameter(CommandArgs&);
+  Result getParamTags(CommandArgs&);
+  Result getParamValue(CommandArgs&);
+  Result setElementRayleighDampingFactors(CommandArgs&);
+  std::vector<const LoadPattern*> loadPatterns(CommandArgs&, const char* command);
+  Result mpDofs(CommandArgs&, const char* command, bool constrained);
+  Result algorithmCounter(CommandArgs&, const char* command);
+  Result parameterCommand(CommandArgs&, const char* command, bool add);
+
   // --- driving one uniaxial material (InterpreterMaterials.cpp) ---
   Result testUniaxialMaterial(CommandArgs&);
   Result setStrain(CommandArgs&);
@@ -199,6 +234,21 @@ class Interpreter {
   std::chrono::steady_clock::time_point timerStart_;
   bool timerRunning_ = false;
   std::vector<double> eigenvalues_;
+  // modalProperties has run since the last eigen (responseSpectrumAnalysis needs it, as OpenSees).
+  bool haveModalProperties_ = false;
+  // setNumThreads; 0 until set (getNumThreads then reports the cores).
+  int numThreads_ = 0;
+  // parameter(...): each maps one value onto objects' arguments.
+  struct ParameterTarget {
+    std::string kind;  // "element" or "node"
+    int tag = 0;
+    std::vector<std::string> args;  // the element's parameter name, or the node's dim
+  };
+  struct Parameter {
+    std::vector<ParameterTarget> targets;
+    double value = 0.0;
+  };
+  std::map<int, Parameter> parameters_;
   // A copy of the material under testUniaxialMaterial; setStrain commits it.
   std::unique_ptr<UniaxialMaterial> testMaterial_;
 };

@@ -166,6 +166,7 @@ Result Interpreter::eigen(CommandArgs& a) {
     a.fail("asked for " + std::to_string(numModes) + " eigenvalues but the model has only " +
            std::to_string(model.numEquations()) + " equations");
   eigenvalues_ = EigenAnalysis::solve(model, numModes, dense);
+  haveModalProperties_ = false;
   domain_->setEigenvalues(eigenvalues_);
   return eigenvalues_;
 }

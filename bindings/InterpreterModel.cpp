@@ -52,6 +52,8 @@ Result Interpreter::wipe(CommandArgs& a) {
   currentPatternTag_ = -1;
   currentSectionTag_ = -1;
   eigenvalues_.clear();
+  haveModalProperties_ = false;
+  parameters_.clear();
   testMaterial_.reset();
   if (recorderFailure) std::rethrow_exception(recorderFailure);
   return {};

@@ -1,10 +1,12 @@
 // Reports of the Interpreter: modalProperties after eigen, printA and printB
 // of the last analysis' linear system.
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "analysis/ModalProperties.h"
+#include "analysis/ResponseSpectrumAnalysis.h"
 #include "bindings/Interpreter.h"
 #include "core/OpenSeesError.h"
 
@@ -40,6 +42,7 @@ Result Interpreter::modalProperties(CommandArgs& a) {
   }
   if (eigenvalues_.empty()) a.fail("no eigenvalues: call eigen first");
   ModalProperties properties(*domain_, eigenvalues_, unorm);
+  haveModalProperties_ = true;
   if (print || !file.empty()) {
     std::ostringstream text;
     properties.report(text);
@@ -47,6 +50,60 @@ Result Interpreter::modalProperties(CommandArgs& a) {
     if (!file.empty()) writeTo(a, file, text.str());
   }
   if (ret) return properties.toDict();
+  return {};
+}
+
+// responseSpectrumAnalysis(tsTag, dir, <'-scale', s>, <'-mode', m>) or
+// responseSpectrumAnalysis(dir, '-Tn', *Tn, '-Sa', *Sa, <'-scale', s>, <'-mode', m>).
+// A timeSeries gives Sa(T) as its factor at time T (a Path is zero outside its
+// times); the lists are interpolated linearly and held constant past either
+// end, as OpenSees. '-scale' is accepted and, as OpenSees documents, unused.
+Result Interpreter::responseSpectrumAnalysis(CommandArgs& a) {
+  const int first = a.nextInt("tsTag (or direction, with -Tn and -Sa)");
+  std::shared_ptr<TimeSeries> series;
+  int direction = first;
+  if (!a.done() && a.nextIsNumber()) {
+    series = domain_->timeSeries.shared(first, "responseSpectrumAnalysis");
+    direction = a.nextInt("direction");
+  }
+  std::vector<double> Tn, Sa;
+  int mode = 0;
+  bool haveTn = false, haveSa = false;
+  while (!a.done()) {
+    const std::string opt = a.nextString("option");
+    if (opt == "-scale") a.nextDouble("scale");
+    else if (opt == "-mode") mode = a.nextInt("mode");
+    else if (opt == "-Tn") { Tn = a.nextDoubles("Tn", 1); haveTn = true; }
+    else if (opt == "-Sa") { Sa = a.nextDoubles("Sa", 1); haveSa = true; }
+    else a.fail("unknown option '" + opt + "' (expected -scale, -mode, -Tn or -Sa)");
+  }
+  if (series && (haveTn || haveSa)) a.fail("give either a timeSeries tag or the lists -Tn and -Sa, not both");
+  if (!series) {
+    if (!haveTn || !haveSa) a.fail("no spectrum: give a timeSeries tag, or the lists '-Tn', *periods, '-Sa', *accelerations");
+    if (Tn.size() != Sa.size())
+      a.fail("-Tn has " + std::to_string(Tn.size()) + " periods but -Sa " + std::to_string(Sa.size()) + " values");
+    for (std::size_t i = 1; i < Tn.size(); ++i)
+      if (!(Tn[i] > Tn[i - 1])) a.fail("-Tn must be increasing");
+  }
+  const int ndm = domain_->spaceDim();
+  const int numDirections = ndm == 1 ? 1 : ndm == 2 ? 3 : 6;
+  if (direction < 1 || direction > numDirections)
+    a.fail("direction " + std::to_string(direction) + " is out of range 1.." + std::to_string(numDirections));
+  if (eigenvalues_.empty() || !haveModalProperties_)
+    a.fail("eigen and modalProperties have not been called (call eigen(n), then modalProperties())");
+  const int numModes = static_cast<int>(eigenvalues_.size());
+  if (mode != 0 && (mode < 1 || mode > numModes))
+    a.fail("mode " + std::to_string(mode) + " is out of range 1.." + std::to_string(numModes));
+  auto spectrum = [&](double T) {
+    if (series) return series->factor(T);
+    if (T <= Tn.front()) return Sa.front();
+    if (T >= Tn.back()) return Sa.back();
+    const std::size_t i = std::upper_bound(Tn.begin(), Tn.end(), T) - Tn.begin();
+    return Sa[i - 1] + (Sa[i] - Sa[i - 1]) * (T - Tn[i - 1]) / (Tn[i] - Tn[i - 1]);
+  };
+  ModalProperties properties(*domain_, eigenvalues_, false);
+  ResponseSpectrumAnalysis::run(*domain_, properties, direction, spectrum, mode);
+  domain_->flushRecorders();
   return {};
 }
 

@@ -91,6 +91,11 @@ def _cases():
     env3 = (10.0, 0.01, 15.0, 0.03, 18.0, 0.08, -12.0, -0.012, -16.0, -0.035, -17.0, -0.09)
     env2 = (10.0, 0.01, 15.0, 0.03, -12.0, -0.012, -16.0, -0.035)
     soft = (10.0, 0.01, 15.0, 0.03, 5.0, 0.06, -12.0, -0.012, -16.0, -0.035, -4.0, -0.07)
+    # A gap (strain 0.01, elastic range 0.01) closed, pushed plastic, walked back through the
+    # open range (which re-centers the gap) and past the initial gap, again and again; then
+    # jumps straight past the initial gap (no re-centering) and back.
+    gap_path = _history([0.025, 0.016, 0.035, 0.022, 0.0, 0.03, 0.05, 0.028, 0.012, 0.045, -0.01, 0.06, 0.03],
+                        0.002, rng) + [0.07, -0.005, 0.02, 0.07, 0.09, 0.05, 0.03, 0.075]
     out = {
         "Steel01": (("Steel01", 1, fy, E0, b), steel),
         "Steel01-iso": (("Steel01", 1, fy, E0, b, 0.04, 2.0, 0.03, 1.5), steel),
@@ -123,6 +128,19 @@ def _cases():
         "Hysteretic-all": (("Hysteretic", 1, *env3, 0.6, 0.2, 0.05, 0.05, 0.3), hyst_path),
         "Hysteretic-two-points": (("Hysteretic", 1, *env2, 0.7, 0.4, 0.02, 0.03, 0.2), hyst_path),
         "Hysteretic-softening": (("Hysteretic", 1, *soft, 0.8, 0.5, 0.01, 0.01, 0.1), hyst_path),
+        "Concrete04": (("Concrete04", 1, -30.0, -0.002, -0.015, 25000.0, 3.0, 0.001, 0.1), conc + tension),
+        "Concrete04-crushing": (("Concrete04", 1, -30.0, -0.002, -0.0045, 27000.0, 2.5, 0.0008), tension + conc),
+        "Concrete04-no-tension": (("Concrete04", 1, 34.5, 0.0025, 0.02, 29000.0), conc + tension),
+        "ElasticBilin": (("ElasticBilin", 1, E0, 0.1 * E0, 2.0 * ey), steel),
+        "ElasticBilin-asymmetric": (("ElasticBilin", 1, E0, -0.05 * E0, 3.0 * ey, 0.5 * E0, 0.2 * E0, -1.5 * ey),
+                                    steel),
+        "ElasticPPGap": (("ElasticPPGap", 1, 1000.0, 10.0, 0.01), gap_path),
+        "ElasticPPGap-hardening": (("ElasticPPGap", 1, 1000.0, 10.0, 0.01, 0.05), gap_path),
+        "ElasticPPGap-softening": (("ElasticPPGap", 1, 1000.0, 10.0, 0.01, -0.02), gap_path),
+        "ElasticPPGap-damage": (("ElasticPPGap", 1, 1000.0, 10.0, 0.01, 0.05, "damage"), gap_path),
+        "ElasticPPGap-compression": (("ElasticPPGap", 1, 1000.0, -10.0, -0.01, 0.05), [-e for e in gap_path]),
+        "ElasticPPGap-compression-damage": (("ElasticPPGap", 1, 1000.0, -10.0, -0.01, 0.0, "damage"),
+                                            [-e for e in gap_path]),
     }
     # Round-off: from a yielded (cracked, hysteretic) state, steps below machine epsilon both
     # ways, then a step just above it. OpenSees keeps the committed state and tangent for a
@@ -131,7 +149,7 @@ def _cases():
     def _round_off(path, at):
         base = path[at]
         return path[:at + 1] + [base + d for d in (1e-17, -1e-17, 1e-16, -1e-16, 1.5e-16, -2e-16)]
-    for name, at in (("Steel01", 5), ("Concrete01", 12), ("Concrete02", 12), ("Hysteretic", 12),
+    for name, at in (("Steel01", 5), ("Concrete01", 12), ("Concrete02", 12), ("Concrete04", 12), ("Hysteretic", 12),
                      ("MultiLinear", 40), ("ElasticPP", 5), ("Hardening", 5)):
         mat, path = out[name] if name in out else (("ElasticPP", 1, E0, ey), steel)
         out[name + "-round-off"] = (mat, _round_off(path, at))
