@@ -71,8 +71,10 @@ class FourNodeQuad : public Element {
 
   // 'force'/'forces' (8, P1_a P2_a), 'stresses'/'stress' and
   // 'strains'/'strain' (4 Gauss points x 3), 'material'/'integrPoint' i ...
-  // (i = 1..4). Gauss points in OpenSees' order (counterclockwise from
-  // the one nearest node 1).
+  // (i = 1..4), 'plasticStrains' (4 x 6, the 3D plastic strain) and
+  // 'equivalentPlasticStrains' (4) when the material has a plastic state
+  // (ours). Gauss points in OpenSees' order (counterclockwise from the one
+  // nearest node 1).
   Response setResponse(const std::vector<std::string>& args) override;
   bool setParameter(const std::vector<std::string>& args, double value) override;
   void updateMaterialStage(int materialTag, int stage) override;

@@ -9,6 +9,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "elements/GaussPointResponse.h"
 
 namespace beamsolid {
 
@@ -265,6 +266,12 @@ Response StdBrick::setResponse(const std::vector<std::string>& args) {
       for (const char* c : {"P1_", "P2_", "P3_"}) names.push_back(c + std::to_string(a));
     return {names, [this] { return Vector(resistingForce()); }};
   }
+  // Plastic state of every Gauss point (materials that have one: J2Plasticity,
+  // DruckerPrager): 6 components (engineering shears) or 1 per point.
+  if (what == "plasticStrains" || what == "plasticStrain")
+    return gaussPointResponse(materials_, {"plasticStrain"});
+  if (what == "equivalentPlasticStrains" || what == "equivalentPlasticStrain")
+    return gaussPointResponse(materials_, {"equivalentPlasticStrain"});
   if ((what == "material" || what == "integrPoint") && args.size() >= 2) {
     int point = 0;
     if (!parseIndex(args[1], point) || point < 1 || point > kGaussPoints) return {};

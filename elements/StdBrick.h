@@ -64,7 +64,9 @@ class StdBrick : public Element {
 
   // 'stresses'/'stress', 'strains'/'strain' (8 Gauss points x 6, OpenSees' point
   // order: xi slowest, zeta fastest),
-  // 'force'/'forces'/'globalForce' (24), 'material' i ... (i = 1..8).
+  // 'force'/'forces'/'globalForce' (24), 'material' i ... (i = 1..8),
+  // 'plasticStrains' (8 x 6) and 'equivalentPlasticStrains' (8) when the
+  // material has a plastic state (ours).
   Response setResponse(const std::vector<std::string>& args) override;
   // Forwarded to every Gauss point material; true when any accepted it.
   bool setParameter(const std::vector<std::string>& args, double value) override;
