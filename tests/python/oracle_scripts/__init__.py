@@ -45,4 +45,6 @@ SCRIPTS = (
     "modal_damping",
     "explicit_difference",
     "earthquake_2d",
+    "example3_cantilever",
+    "force_beam_iterations",
 )
