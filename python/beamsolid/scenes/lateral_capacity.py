@@ -16,8 +16,10 @@ Four models of it:
     pile-surface soil node, Lagrange multipliers, the '-pile' chain). Interface: ContactMaterial3D
     with mu = 0 and adhesion c = 0 (smooth) or c = s_u times the node's share of the pile surface
     (rough). A gap opens behind the pile where the soil's horizontal stress (K0 gamma z) is used up.
-(b) "brick": the pile as elastic bricks (mesh.solid_cylinder) tied node to node to the same soil
-    (equalDOF, also under the tip): no gap, no slip.
+(b) "brick": the pile as elastic bricks (mesh.solid_cylinder) in the same soil, joined to it by
+    one zeroLengthContact3D per pair of coincident surface nodes (normal towards the pile axis,
+    adhesion c as (a) rough; node-to-node, so for small sliding); "brick_tied": the pairs tied
+    (equalDOF, also under the base): no gap, no slip.
 (c) "py": the beam pile on Matlock (1970) soft-clay p-y springs from the same s_u and gamma
     (beamsolid.springs.pile_springs, PySimple1 soilType 1, eps50 = 0.005, J = 0.5), a 2D model.
 (d) "broms": Broms (1964) ultimate lateral load of a short free-head pile in cohesive soil
@@ -42,7 +44,7 @@ class ClayPile:
     """The physical problem (kN, m, kPa)."""
 
     su: float = 40.0
-    E_over_su: float = 400.0
+    E_over_su: float = 500.0
     nu: float = 0.49  # undrained
     gamma: float = 18.0  # total unit weight (clay above the water table)
     pile_radius: float = 0.4
@@ -51,8 +53,8 @@ class ClayPile:
     outer_radius: float = 8.0
     pile_E: float = 30e6
     pile_nu: float = 0.2
-    head_disp: float = 0.2  # 0.25 D
-    eps50: float = 0.005  # Matlock's strain at half the peak deviator (s_u / E ~ 0.0025 for this soil)
+    head_disp: float = 0.16  # 0.2 D
+    eps50: float = 0.005  # Matlock's strain at half the peak deviator (s_u / E = 0.002 for this soil)
     J: float = 0.5  # Matlock's J
 
     @property
@@ -146,7 +148,8 @@ from ..stepping import adaptive_analyze  # noqa: E402
 MODELS = {
     "rough": "beam + BeamContact3D, rough (c = s_u)",
     "smooth": "beam + BeamContact3D, smooth",
-    "brick": "brick pile tied to the soil",
+    "brick": "brick pile + zeroLengthContact3D, rough",
+    "brick_tied": "brick pile tied to the soil",
     "py": "beam on Matlock p-y springs",
 }
 
@@ -173,9 +176,9 @@ HEAD_BRICK = 900001  # the brick pile's head node (rigidLink 'beam' to its top f
 @dataclass(frozen=True)
 class Numerics:
     level: str = "coarse"
-    steps: int = 20  # nominal steps to head_disp (halved on a failed Newton, down to 1/32)
+    steps: int = 16  # nominal steps to head_disp (halved on a failed Newton, down to 1/32)
     tol: float = 1e-8  # NormDispIncr (m; multiplier rows in kN)
-    max_iter: int = 25
+    max_iter: int = 15  # converged steps take 6-10; a diverging one is cut sooner
     contact_G: float = 1e5  # stick stiffness of the rough contact (kN/m per node)
 
     def __post_init__(self):
@@ -230,6 +233,11 @@ class CapacityResult:
     def wall(self):
         return self.timings.get("total", math.nan)
 
+    @property
+    def cpu(self):
+        """CPU time of the process (all its threads): the cost measure on a shared machine."""
+        return self.timings.get("cpu", math.nan)
+
 
 def pile_levels(problem, n_pile):
     """Elevations from the ground to the tip: n_pile layers, the deepest TOP_GROWTH times the top one."""
@@ -267,6 +275,37 @@ class _SolidModel:
                           levels=self.levels, material_tag=SOIL, first_node=FIRST_SOIL, first_element=FIRST_SOIL,
                           body_force=(0.0, 0.0, -p.gamma), core_below=-p.length, element="bbarBrick")
         self.fixed_soil = list(fix_soil_boundary(m, self.mesh))
+
+    def tip_surcharge(self):
+        """The weight of the soil the pile replaces, gamma L, as a pressure on the soil under its
+        tip (consistent nodal loads on the filled core's top face). The beam pile weighs nothing
+        and does not bear on that soil, which would otherwise carry only its own weight (its
+        stress 40 % off the free field's, and 7 % off beside the tip)."""
+        p, m, mesh = self.p, self.m, self.mesh
+        q = p.gamma * p.length
+        g = 1.0 / math.sqrt(3.0)
+        loads = {}
+        for quad_index in mesh.plan.core_quads:
+            quad = mesh.plan.quads[quad_index]
+            xy = [mesh.plan.points[i] for i in quad]
+            for xi, eta in ((-g, -g), (g, -g), (g, g), (-g, g)):
+                N = [(1 - xi) * (1 - eta) / 4, (1 + xi) * (1 - eta) / 4, (1 + xi) * (1 + eta) / 4,
+                     (1 - xi) * (1 + eta) / 4]
+                dxi = [-(1 - eta) / 4, (1 - eta) / 4, (1 + eta) / 4, -(1 + eta) / 4]
+                deta = [-(1 - xi) / 4, -(1 + xi) / 4, (1 + xi) / 4, (1 - xi) / 4]
+                jxx = sum(d * c[0] for d, c in zip(dxi, xy))
+                jxy = sum(d * c[1] for d, c in zip(dxi, xy))
+                jyx = sum(d * c[0] for d, c in zip(deta, xy))
+                jyy = sum(d * c[1] for d, c in zip(deta, xy))
+                w = abs(jxx * jyy - jxy * jyx)
+                for a, point in enumerate(quad):
+                    tag = mesh.node_at[(point, self.n_pile)]
+                    loads[tag] = loads.get(tag, 0.0) + q * N[a] * w
+        m.timeSeries("Linear", 1)
+        m.pattern("Plain", 1, 1)
+        for tag, f in loads.items():
+            m.load(tag, 0.0, 0.0, -f)
+        return sum(loads.values())
 
     def analysis(self):
         m, n = self.m, self.n
@@ -326,12 +365,18 @@ class ContactModel(_SolidModel):
         m.wipe()
         m.model("basic", "-ndm", 3, "-ndf", 6)
         z_pile = self.levels[:self.n_pile + 1]
-        self.pile_nodes = list(range(1, len(z_pile) + 1))
-        for tag, z in zip(self.pile_nodes, z_pile):
+        # Beam nodes at the head, the tip and half way between the soil levels, so that every
+        # interior ring of contacts sits inside a segment. A soil node level with a beam node is
+        # handed from segment to segment whenever it moves vertically relative to the pile (the
+        # head tilts); each hand-over re-numbers the system, and the hand-over's redistribution
+        # leaves an unbalance at the beam nodes that only the next step removes.
+        z_beam = [z_pile[0]] + [0.5 * (a + b) for a, b in zip(z_pile, z_pile[1:])] + [z_pile[-1]]
+        self.pile_nodes = list(range(1, len(z_beam) + 1))
+        for tag, z in zip(self.pile_nodes, z_beam):
             m.node(tag, 0.0, 0.0, z)
         m.geomTransf("Linear", TRANSF, 1.0, 0.0, 0.0)  # local z = global x: bending about global y
         I = p.inertia
-        self.beams = list(range(1, len(z_pile)))
+        self.beams = list(range(1, len(z_beam)))
         for e in self.beams:
             m.element("elasticBeamColumn", e, e, e + 1, p.area, p.pile_E, p.pile_G, 2.0 * I, I, I, TRANSF)
         for tag in self.pile_nodes:
@@ -357,6 +402,7 @@ class ContactModel(_SolidModel):
     def geostatic(self):
         p, m = self.p, self.m
         m.updateMaterialStage("-material", SOIL, "-stage", 0)
+        self.tip_surcharge()
         state = geostatic_stage(m, soil_elements=self.mesh.elements, gamma=p.gamma, K0=p.K0,
                                 contact_materials=self.materials, tol=self.n.tol, check_tol=1e-6,
                                 initial_state=True)
@@ -387,28 +433,49 @@ class ContactModel(_SolidModel):
 
 
 class BrickModel(_SolidModel):
-    """(b): the pile as elastic bricks tied to the J2 soil (equalDOF), head rigid."""
+    """(b): the pile as elastic bricks (SSPbrick: no shear locking in bending) in the J2 soil,
+    its head rigid (rigidLink 'beam' to a 6-dof head node). kind "brick": one zeroLengthContact3D
+    per pair of coincident pile and soil surface nodes (dir 0: normal towards the pile axis;
+    penalty Kn, adhesion c = s_u times the node's share of the surface, mu = 0), the base free;
+    kind "brick_tied": every coincident pair tied (equalDOF), also under the base."""
 
     def build(self):
-        p, m = self.p, self.m
+        p, m, n = self.p, self.m, self.n
         m.wipe()
         self.soil()
         m.nDMaterial("ElasticIsotropic", PILE_ELASTIC, p.pile_E, p.pile_nu)
         m.nDMaterial("InitialStateAnalysisWrapper", PILE, PILE_ELASTIC, 3)
         z_pile = self.levels[:self.n_pile + 1]
-        # The pile weighs as much as the soil it replaces (its weight does not matter laterally).
+        tied = self.kind == "brick_tied"
+        # Tied, the pile weighs as much as the soil it replaces (it carries the column below it);
+        # in contact it is held through the gravity stage, weightless, as the beam pile.
         self.pile = solid_cylinder(m, radius=p.pile_radius, levels=z_pile, n_theta=self.n_theta, material_tag=PILE,
-                                   body_force=(0.0, 0.0, -p.gamma), element="SSPbrick")
+                                   body_force=(0.0, 0.0, -p.gamma if tied else 0.0), element="SSPbrick")
         soil_at = {tuple(round(c, 9) for c in xyz): t for t, xyz in self.mesh.coords.items()}
-        self.pairs = []  # (pile node, soil node)
+        self.pairs = []  # (pile node, soil node, zeroLengthContact3D tag or None)
+        base = set(self.pile.groups["base"])
+        ring = set(self.pile.groups["outer"])
+        arc = 2.0 * math.pi * p.pile_radius / self.n_theta
+        Kn = 1e3 * p.soil_E * p.pile_radius  # normal penalty per node pair (as scenes.lateral_pile_solid)
+        tag = max(m.getEleTags()) + 1
         for t in self.pile.nodes:
             s = soil_at.get(tuple(round(c, 9) for c in self.pile.coords[t]))
-            if s is not None:
+            if s is None:
+                continue
+            if tied:
                 m.equalDOF(t, s, 1, 2, 3)
-                self.pairs.append((t, s))
-        expected = self.n_theta * self.n_pile + len(self.pile.groups["base"])
+                self.pairs.append((t, s, None))
+            elif t in ring:
+                k = min(range(len(z_pile)), key=lambda i: abs(z_pile[i] - self.pile.coords[t][2]))
+                h = (0.5 * (z_pile[k - 1] - z_pile[k]) if k > 0 else 0.0) + \
+                    (0.5 * (z_pile[k] - z_pile[k + 1]) if k < self.n_pile else 0.0)
+                m.element("zeroLengthContact3D", tag, t, s, Kn, n.contact_G, 0.0, p.su * arc * h, 0)
+                self.pairs.append((t, s, tag))
+                self.contacts.append((s, tag))
+                tag += 1
+        expected = self.n_theta * self.n_pile + (len(base) if tied else self.n_theta)
         if len(self.pairs) != expected:
-            raise RuntimeError(f"lateral_capacity: tied {len(self.pairs)} pile nodes to the soil, expected {expected}")
+            raise RuntimeError(f"lateral_capacity: joined {len(self.pairs)} pile nodes to the soil, expected {expected}")
         m.model("basic", "-ndm", 3, "-ndf", 6)
         m.node(HEAD_BRICK, 0.0, 0.0, 0.0)
         for t in self.pile.groups["top"]:
@@ -419,11 +486,34 @@ class BrickModel(_SolidModel):
     def geostatic(self):
         p, m = self.p, self.m
         m.updateMaterialStage("-material", SOIL, "-stage", 0)
-        m.fix(self.head, 0, 0, 0, 0, 0, 0)  # held by the pile's bricks
-        # Tied, the soil hangs on the stiffer pile a little: the stress is reported, not checked.
-        state = geostatic_stage(m, soil_elements=self.mesh.elements, gamma=p.gamma, K0=p.K0, tol=self.n.tol,
-                                initial_state=True)
+        if self.kind == "brick_tied":
+            # Tied, the soil hangs on the stiffer pile: the stress is reported, not checked.
+            state = geostatic_stage(m, soil_elements=self.mesh.elements, gamma=p.gamma, K0=p.K0, tol=self.n.tol,
+                                    initial_state=True)
+            m.updateMaterialStage("-material", SOIL, "-stage", 1)
+            return state
+        # Contact: the pile held (its head and every pile node below it), the contacts frictionless,
+        # the soil under the tip loaded by the weight of the column the pile replaces.
+        elements = [e for _, _, e in self.pairs]
+        held = [t for t in self.pile.nodes if t not in set(self.pile.groups["top"])]
+        m.fix(self.head, 1, 1, 1, 1, 1, 1)
+        for t in held:
+            m.fix(t, 1, 1, 1)
+        m.setParameter("-val", 0.0, "-ele", *elements, "friction")
+        self.tip_surcharge()
+        # Not inside InitialStateAnalysis: zeroing the displacements would zero the penalty
+        # contacts' penetration, hence their force, and the soil would start off balance by its
+        # horizontal stress. The soil settles by gamma H^2 / (2 M) ~ 2 mm past the held pile instead.
+        # The penalty contacts yield by sigma_h A / Kn: not exactly uniaxial strain, so reported.
+        state = geostatic_stage(m, soil_elements=self.mesh.elements, gamma=p.gamma, K0=p.K0, tol=self.n.tol)
+        m.setParameter("-val", 1.0, "-ele", *elements, "friction")
         m.updateMaterialStage("-material", SOIL, "-stage", 1)
+        for t in held:
+            for d in (1, 2, 3):
+                m.remove("sp", t, d)
+        for d in range(1, 7):
+            m.remove("sp", self.head, d)
+        m.fix(self.head, 0, 0, 0, 0, 0, 1)  # the torsion held, as the beam pile's
         return state
 
     def head_force(self):
@@ -434,14 +524,21 @@ class BrickModel(_SolidModel):
         return -sum(m.nodeReaction(t, 1) for t in self.fixed_soil)
 
     def interface_forces(self):
-        """[(x, z, Fx, Fz)]: the soil's action on the pile at each tied node: minus the soil bricks'
-        resisting forces there (at a tied pair the two sides' resisting forces balance)."""
+        """[(x, z, Fx, Fz)]: the soil's action on the pile at each joined node. Contact: minus the
+        element's force on the pile (its first) node. Tied: minus the soil bricks' resisting forces
+        there (at a tied pair the two sides' resisting forces balance)."""
         m = self.m
-        tied = {s: t for t, s in self.pairs}
+        if self.kind == "brick":
+            out = []
+            for t, s, e in self.pairs:
+                f = m.eleResponse(e, "force")
+                out.append((m.nodeCoord(t, 1), m.nodeCoord(t, 3), -f[0], -f[2]))
+            return out
+        tied = {s for _, s, _ in self.pairs}
         acc = {}
         for e in self.mesh.elements:
             nodes = m.eleNodes(e)
-            if not tied.keys() & set(nodes):
+            if not tied & set(nodes):
                 continue
             f = m.eleResponse(e, "forces")
             for a, t in enumerate(nodes):
@@ -469,10 +566,11 @@ class BrickModel(_SolidModel):
 
 
 def _run_solid(cls, kind, problem, numerics, m=None, out=None, on_step=None):
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     model = cls(problem, numerics, kind, m).build()
     r = CapacityResult(model=kind, level=numerics.level, n_contacts=len(model.contacts),
-                       n_elements=len(model.mesh.elements) + (len(model.pile.elements) if kind == "brick" else 0))
+                       n_elements=len(model.mesh.elements) + (len(model.pile.elements) if kind.startswith("brick")
+                                                                else 0))
     t1 = time.perf_counter()
     r.geostatic = model.geostatic()
     t2 = time.perf_counter()
@@ -482,7 +580,8 @@ def _run_solid(cls, kind, problem, numerics, m=None, out=None, on_step=None):
     t3 = time.perf_counter()
     model.finish(r)
     model.m.wipe()
-    r.timings = dict(build=t1 - t0, geostatic=t2 - t1, push=t3 - t2, total=time.perf_counter() - t0)
+    r.timings = dict(build=t1 - t0, geostatic=t2 - t1, push=t3 - t2, total=time.perf_counter() - t0,
+                     cpu=time.process_time() - c0)
     return r
 
 
@@ -493,9 +592,11 @@ def run_contact(problem=ClayPile(), numerics=Numerics(), interface="rough", m=No
     return _run_solid(ContactModel, interface, problem, numerics, m, out, on_step)
 
 
-def run_brick(problem=ClayPile(), numerics=Numerics(), m=None, out=None):
-    """(b) the brick pile tied to the soil."""
-    return _run_solid(BrickModel, "brick", problem, numerics, m, out)
+def run_brick(problem=ClayPile(), numerics=Numerics(), interface="contact", m=None, out=None):
+    """(b) the brick pile, with zeroLengthContact3D ('contact') or tied to the soil ('tied')."""
+    if interface not in ("contact", "tied"):
+        raise ValueError(f"lateral_capacity: brick interface must be 'contact' or 'tied', got {interface!r}")
+    return _run_solid(BrickModel, "brick" if interface == "contact" else "brick_tied", problem, numerics, m, out)
 
 
 def run_py(problem=ClayPile(), numerics=Numerics(), m=None):
@@ -504,7 +605,7 @@ def run_py(problem=ClayPile(), numerics=Numerics(), m=None):
     from ..springs import SoftClay, pile_springs
 
     p = problem
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     m = m if m is not None else Model()
     n_el = PY_ELEMENTS[numerics.level]
     m.wipe()
@@ -551,7 +652,7 @@ def run_py(problem=ClayPile(), numerics=Numerics(), m=None):
     r.moment = [-f[2] for f in forces] + [forces[-1][5]]
     r.soil_reaction = sum(m.eleResponse(row["element"], "force")[0] for row in made.rows)
     m.wipe()
-    r.timings = dict(total=time.perf_counter() - t0)
+    r.timings = dict(total=time.perf_counter() - t0, cpu=time.process_time() - c0)
     return r
 
 
@@ -559,8 +660,8 @@ def run(model, problem=ClayPile(), numerics=Numerics(), out=None):
     """One model by name: 'rough', 'smooth', 'brick' or 'py'."""
     if model in ("rough", "smooth"):
         return run_contact(problem, numerics, model, out=out)
-    if model == "brick":
-        return run_brick(problem, numerics, out=out)
+    if model in ("brick", "brick_tied"):
+        return run_brick(problem, numerics, "contact" if model == "brick" else "tied", out=out)
     if model == "py":
         return run_py(problem, numerics)
     raise ValueError(f"lateral_capacity: model must be one of {sorted(MODELS)}, got {model!r}")
@@ -578,7 +679,7 @@ def _plots(out, results, problem, closed):
 
     files = []
     D = problem.diameter
-    styles = {"rough": "o-", "smooth": "s-", "brick": "^-", "py": "D-"}
+    styles = {"rough": "o-", "smooth": "s-", "brick": "^-", "brick_tied": "v--", "py": "D-"}
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for key, r in results.items():
         ax.plot([u / D for u in r.head_disp], r.head_force, styles[key], ms=3, label=MODELS[key])
