@@ -45,4 +45,5 @@ SCRIPTS = (
     "modal_damping",
     "explicit_difference",
     "earthquake_2d",
+    "solid_elements",
 )

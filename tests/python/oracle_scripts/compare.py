@@ -94,6 +94,21 @@ KNOWN_DIFFERENCES = {
         "increment); BeamSolid's dynamic tangent holds the bar's consistent damping tangent A eta / L0 e e^T "
         "(3 and 6 Newton iterations a step at alpha 1 and 0.5), OpenSeesPy 3.7.1 converges more slowly (7 and "
         "14)",
+    ("solid_elements", "bbarQuad.*.ele*.st*"):
+        "bbarQuad stresses/strains: OpenSeesPy 3.7.1 writes the 33 component twice per Gauss point (11 22 33 33) "
+        "where its material holds 11 22 33 12; BeamSolid writes 11 22 33 12 (the first three agree, and so do "
+        "the 'material' k 'stress'/'strain' responses)",
+    ("solid_elements", "SSP*.distorted.[de]*"):
+        "SSPquad/SSPbrick on non-rectangular elements: the hourglass stiffness differs (docs/solid_elements.md: "
+        "ours is the published assumed strain (quad) and Puso's enhanced strain in the natural basis (brick), "
+        "OpenSees' differs and is not invariant under rotation); 0.1-0.3 % in displacements, 0.3-1.3 % in "
+        "element forces and stresses, 1.8 % in the SSPquad frequencies here. Regular meshes and the patch "
+        "test on these meshes agree to 1e-14",
+    ("solid_elements", "SSPquad.*.distorted.sw.disp"):
+        "see SSP*.distorted.[de]*: the self-weight stage on the distorted mesh",
+    ("solid_elements", "SSPbrick.distorted.reactionSum"):
+        "SSPbrick body force on a distorted element: OpenSees' nodal shares (the weights of its lumped mass) "
+        "do not sum to the element volume (6e-8 of the load here); BeamSolid's integral(N_a dV) do",
     ("modal_damping", "column.hht"):
         "modalDamping under HHT: BeamSolid evaluates the modal damping force at the alpha-state velocity, as "
         "it does Rayleigh damping; OpenSeesPy 3.7.1 gives 4e-4 relative different displacements from the first "

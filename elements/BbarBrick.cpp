@@ -1,0 +1,26 @@
+#include "elements/BbarBrick.h"
+
+#include "core/Registry.h"
+
+namespace beamsolid {
+
+void BbarBrick::formStrainDisplacement(int g, StrainDisplacement& B) const {
+  StdBrick::formStrainDisplacement(g, B);
+  const Cell::ShapeGradients& d = cell().gradients(g);
+  for (int a = 0; a < kNodes; ++a)
+    for (int i = 0; i < 3; ++i) {
+      // The dilatation of dof (a, i) is d(a, i) at the point and meanGradients_(a, i) on average.
+      const double shift = (meanGradients_(a, i) - d(a, i)) / 3.0;
+      for (int row = 0; row < 3; ++row) B(row, 3 * a + i) += shift;
+    }
+}
+
+namespace {
+void registerBbarBrick(Registry& r) {
+  r.elements.add("bbarBrick", [](CommandArgs& a, Domain& d) { return solidargs::brick<BbarBrick>(a, d, "bbarBrick"); });
+}
+}  // namespace
+
+BEAMSOLID_REGISTER(registerBbarBrick);
+
+}  // namespace beamsolid
