@@ -128,17 +128,24 @@ def cylinder_inner_error(m, etype, n, nu, a=1.0, b=2.0, p=1.0, E=1000.0, depth=0
     return float(np.mean(radial)) / exact - 1.0
 
 
-def bending_tip_error(m, etype, nx, ny, nu, L=10.0, h=1.0, E=1000.0, M=1.0, depth=0.5):
+def bending_tip_error(m, etype, nx, ny, nu, L=10.0, h=1.0, E=1000.0, M=1.0, depth=0.5, skew=0.0):
     """Cantilever of length L and depth h in plane strain, pure bending:
     the tip carries the linear traction -M y / I (consistent nodal forces),
     the root x = 0 is on rollers (u = 0) with v = 0 at its middle node, which
     the exact 2D solution satisfies (u = -k x y, v = k (x^2 + nu' y^2) / 2,
     k = M / (E' I), E' = E / (1 - nu^2)). Returns the relative error of the
     tip deflection v(L, 0) against beam theory, M L^2 / (2 E' I), which is
-    here exact. ny must be even."""
+    here exact. ny must be even. skew > 0 distorts the mesh: the interior
+    columns of nodes lean alternately by +-skew element widths over the
+    depth (trapezoids)."""
     brick = etype in BRICKS
     thick = depth if brick else 1.0
-    tag = plane_strain_grid(m, etype, lambda i, j: (L * i / nx, -h / 2 + h * j / ny), nx, ny,
+    def point(i, j):
+        y = -h / 2 + h * j / ny
+        lean = skew * (L / nx) * (2 * y / h) * (-1) ** i if 0 < i < nx else 0.0
+        return L * i / nx + lean, y
+
+    tag = plane_strain_grid(m, etype, point, nx, ny,
                             lambda i, j: (int(i == 0), int(i == 0 and 2 * j == ny)), depth)
     m.nDMaterial("ElasticIsotropic", 1, E, nu)
     plane_strain_elements(m, etype, tag, nx, ny)

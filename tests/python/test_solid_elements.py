@@ -88,6 +88,17 @@ def test_sspbrick_is_exact_in_pure_bending(model, nu):
         assert abs(sm.bending_tip_error(model, "SSPbrick", *mesh, nu)) < 1e-7
 
 
+@pytest.mark.parametrize("etype", ["bbarQuad", "SSPquad", "bbarBrick", "SSPbrick"])
+def test_cantilever_bending_on_a_skewed_mesh_converges(model, etype):
+    # Interior node columns lean by +-1/4 element width over the depth
+    # (trapezoids, as distorted at every refinement), nu = 0.4999. Measured
+    # at 32x8 / 64x16: bbarQuad/bbarBrick -2.3 / -0.52 %, SSPquad +0.58 /
+    # +0.26 %, SSPbrick -0.55 / -0.035 %.
+    errors = [sm.bending_tip_error(model, etype, nx, ny, 0.4999, skew=0.25) for nx, ny in BENDING_MESHES[1:]]
+    assert abs(errors[-1]) < 0.006, errors
+    assert abs(errors[-1]) < 0.5 * abs(errors[0]), errors
+
+
 @pytest.mark.parametrize("etype", ["quad", "stdBrick"])
 def test_cantilever_bending_standard_elements_lock_when_nearly_incompressible(model, etype):
     # Measured: -98.7 %, -95.1 %, -83.0 % at nu = 0.4999 (and -13 %, -3.6 %,
@@ -193,3 +204,29 @@ def test_pvd_recorder_writes_the_cells_and_their_mean_stress(tmp_path, etype):
     lam, G = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
     expected = [(lam + 2 * G) * 1e-3, lam * 1e-3, lam * 1e-3 if (brick or etype == "bbarQuad") else 0.0, 0, 0, 0]
     assert np.allclose(stress, expected, atol=1e-12), stress
+
+
+@pytest.mark.parametrize("etype, args", [("bbarQuad", (0.5, 1)), ("SSPquad", (1, "PlaneStrain", 0.5))])
+def test_block2d_meshes_the_new_quads(model, etype, args):
+    # block2D passes OpenSees' eleArgs counts (bbarQuad 2, SSPquad 3) through
+    # the element command; the mesh's area is the block's.
+    model.wipe()
+    model.model("basic", "-ndm", 2, "-ndf", 2)
+    model.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.3, 2.0)
+    model.block2D(3, 2, 1, 1, etype, *args, 1, 0.0, 0.0, 2, 3.0, 0.0, 3, 3.0, 2.0, 4, 0.0, 2.0)
+    assert model.getEleTags() == list(range(1, 7))
+    assert all(model.eleType(e) in ("SSPquad", "ConstantPressureVolumeQuad") for e in range(1, 7))
+    assert model.eleNodes(6) == [7, 8, 12, 11]
+    assert model.nodeCoord(12) == pytest.approx([3.0, 2.0])
+
+
+@pytest.mark.parametrize("etype", ["bbarBrick", "SSPbrick"])
+def test_block3d_meshes_the_new_bricks(model, etype):
+    model.wipe()
+    model.model("basic", "-ndm", 3, "-ndf", 3)
+    model.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.3)
+    corners = [(0, 0, 0), (2, 0, 0), (2, 1, 0), (0, 1, 0), (0, 0, 1), (2, 0, 1), (2, 1, 1), (0, 1, 1)]
+    points = [v for k, c in enumerate(corners, start=1) for v in (k, *c)]
+    model.block3D(2, 1, 1, 1, 1, etype, 1, *points)
+    assert model.getEleTags() == [1, 2]
+    assert len(model.eleResponse(1, "forces")) == 24
