@@ -193,14 +193,16 @@ def footing_mesh(nx, ny, half_width=1.0, width=5.0, depth=4.0, grading=1.6):
     return np.concatenate([xs_under, xs_beyond]), ys
 
 
-def strip_footing(m, etype, nx, ny, su=1.0, E=1000.0, nu=0.49, settlement=0.05, steps=25, **mesh):
+def strip_footing(m, etype, nx, ny, su=1.0, E=1000.0, nu=0.49, settlement=0.05, steps=25, algorithm=("Newton",),
+                  **mesh):
     """A rigid smooth strip footing (half width 1) pushed into weightless
     von Mises soil (nDMaterial J2Plasticity, perfectly plastic, yield stress
     sqrt(3) su so that the plane-strain shear strength is su) by imposed
     vertical displacement of its nodes, horizontal displacement free. The
     mesh is footing_mesh(nx, ny); the far side and the bottom are on rollers.
     Returns the bearing pressures q / su (the footing reaction over the half
-    width) after each step."""
+    width) after each converged step (beamsolid.stepping.adaptive_analyze:
+    nominal steps of settlement / steps, cut where Newton fails)."""
     xs, ys = footing_mesh(nx, ny, **mesh)
     ys = ys[::-1]  # bottom (j = 0) to surface (j = ny)
     brick = etype in BRICKS
@@ -222,14 +224,19 @@ def strip_footing(m, etype, nx, ny, su=1.0, E=1000.0, nu=0.49, settlement=0.05, 
     m.numberer("RCM")
     m.system("UmfPack")
     m.test("NormDispIncr", 1e-8 * settlement, 50)
-    m.algorithm("Newton")
+    m.algorithm(*algorithm)
     m.integrator("LoadControl", 1.0 / steps)
     m.analysis("Static")
     q = []
-    for _ in range(steps):
-        if m.analyze(1) != 0:
-            break
+
+    def record(progress, iterations):
         m.reactions()
         total = sum(m.nodeReaction(tag(i, nj, k), 2) for i in footing for k in range(layers))
-        q.append(total / (1.0 * (0.25 if brick else 1.0)) / su)
+        q.append(abs(total) / (0.25 if brick else 1.0) / su)
+
+    # Steps of settlement / steps, halved (down to 1/64) where Newton fails:
+    # the first plastic steps at the footing edge need them on fine meshes.
+    from beamsolid.stepping import adaptive_analyze
+
+    adaptive_analyze(m, 1.0, steps, on_step=record)
     return q
