@@ -23,6 +23,9 @@ class Algorithm {
   // initial one never changes and is factored once. False when singular,
   // with lastError() naming the dofs.
   bool formAndFactor(AnalysisModel& model, Integrator& integrator, bool initial);
+  // The test gave up: keeps "<test> failed to converge in <n> <what> (last norm, tolerance)"
+  // for lastError() and returns -3 (OpenSees' failed step).
+  int notConverged(const ConvergenceTest& test, const std::string& what = "iterations");
 
   std::string lastError_;
   bool singular_ = false;

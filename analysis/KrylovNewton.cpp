@@ -55,10 +55,7 @@ int KrylovNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator,
     integrator.formUnbalance(model);
     switch (test.test(system)) {
       case ConvergenceTest::Result::Converged: return 0;
-      case ConvergenceTest::Result::Failed:
-        lastError_ = test.name() + " failed to converge in " + std::to_string(test.numIterations()) +
-                     " iterations (last norm " + std::to_string(test.norms().back()) + ")";
-        return -3;
+      case ConvergenceTest::Result::Failed: return notConverged(test);
       case ConvergenceTest::Result::Continue: break;
     }
     // The subspace cannot hold more independent directions than there are

@@ -1,6 +1,5 @@
 #include "analysis/Newton.h"
 
-#include <cstdio>
 #include <memory>
 
 #include "analysis/ConvergenceTest.h"
@@ -33,14 +32,7 @@ int Newton::solveCurrentStep(AnalysisModel& model, Integrator& integrator, Conve
     integrator.formUnbalance(model);
     switch (test.test(system)) {
       case ConvergenceTest::Result::Converged: return 0;
-      case ConvergenceTest::Result::Failed: {
-        // %g: std::to_string's six fixed decimals print small norms as 0.000000.
-        char numbers[64];
-        std::snprintf(numbers, sizeof numbers, "last norm %g, tolerance %g", test.norms().back(), test.tolerance());
-        lastError_ = test.name() + " failed to converge in " + std::to_string(test.numIterations()) +
-                     " iterations (" + numbers + ")";
-        return -3;
-      }
+      case ConvergenceTest::Result::Failed: return notConverged(test);
       case ConvergenceTest::Result::Continue: break;
     }
   }

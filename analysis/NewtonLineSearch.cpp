@@ -72,7 +72,6 @@ int NewtonLineSearch::search(AnalysisModel& model, Integrator& integrator, const
 }
 
 int NewtonLineSearch::solveCurrentStep(AnalysisModel& model, Integrator& integrator, ConvergenceTest& test) {
-  using S = AnalysisModel::Stiffness;
   singular_ = false;
   lastError_.clear();
   evaluations_ = 0;
@@ -99,10 +98,7 @@ int NewtonLineSearch::solveCurrentStep(AnalysisModel& model, Integrator& integra
     system.x() = total;  // the increment of this iteration, for the test
     switch (test.test(system)) {
       case ConvergenceTest::Result::Converged: return 0;
-      case ConvergenceTest::Result::Failed:
-        lastError_ = test.name() + " failed to converge in " + std::to_string(test.numIterations()) +
-                     " iterations (last norm " + std::to_string(test.norms().back()) + ")";
-        return -3;
+      case ConvergenceTest::Result::Failed: return notConverged(test);
       case ConvergenceTest::Result::Continue: break;
     }
   }

@@ -1,6 +1,5 @@
 #include "analysis/QuasiNewton.h"
 
-#include <cstdio>
 #include <memory>
 
 #include "analysis/AnalysisModel.h"
@@ -78,13 +77,8 @@ int QuasiNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator, 
     }
     switch (test.test(system)) {
       case ConvergenceTest::Result::Converged: return 0;
-      case ConvergenceTest::Result::Failed: {
-        char numbers[64];
-        std::snprintf(numbers, sizeof numbers, "last norm %g, tolerance %g", test.norms().back(), test.tolerance());
-        lastError_ = test.name() + " failed to converge in " + std::to_string(test.numIterations()) +
-                     " cycles of " + std::to_string(count_ + 1) + " iterations (" + numbers + ")";
-        return -3;
-      }
+      case ConvergenceTest::Result::Failed:
+        return notConverged(test, "cycles of " + std::to_string(count_ + 1) + " iterations");
       case ConvergenceTest::Result::Continue: break;
     }
   }

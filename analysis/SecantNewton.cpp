@@ -1,6 +1,5 @@
 #include "analysis/SecantNewton.h"
 
-#include <cstdio>
 #include <memory>
 
 #include "analysis/AnalysisModel.h"
@@ -58,13 +57,7 @@ int SecantNewton::solveCurrentStep(AnalysisModel& model, Integrator& integrator,
     integrator.formUnbalance(model);
     switch (test.test(system)) {
       case ConvergenceTest::Result::Converged: return 0;
-      case ConvergenceTest::Result::Failed: {
-        char numbers[64];
-        std::snprintf(numbers, sizeof numbers, "last norm %g, tolerance %g", test.norms().back(), test.tolerance());
-        lastError_ = test.name() + " failed to converge in " + std::to_string(test.numIterations()) +
-                     " iterations (" + numbers + ")";
-        return -3;
-      }
+      case ConvergenceTest::Result::Failed: return notConverged(test);
       case ConvergenceTest::Result::Continue: break;
     }
     if (accelerated + 1 >= maxDimension_) {

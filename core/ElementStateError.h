@@ -4,10 +4,11 @@
 namespace beamsolid {
 
 // Thrown by an element (or material) whose state determination fails for
-// the current trial displacements (e.g. a force-based element that cannot
-// reach compatibility). The analysis treats it as a failed step: the model
-// reverts to its last converged state and analyze returns a negative code,
-// as in OpenSees, so the usual cut-the-step retry loop works.
+// the current trial displacements. The analysis treats it as a failed step:
+// the model reverts to its last converged state and analyze returns a
+// negative code, so the usual cut-the-step retry loop works. (forceBeamColumn
+// does not throw it: as OpenSees' element it warns and goes on with its last
+// state, see ForceBeamCompatibility.h.)
 class ElementStateError : public OpenSeesError {
  public:
   using OpenSeesError::OpenSeesError;

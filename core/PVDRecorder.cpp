@@ -388,14 +388,16 @@ void PVDRecorder::updateTopology(Domain& domain) {
         // The bricks' order (bottom face counterclockwise seen from above,
         // then the top face, node 5 above node 1) is VTK_HEXAHEDRON's.
         cell.vtkType = kVtkHexahedron;
-        cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"})};
+        cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
+                          element->setResponse({"plasticStrains"}), element->setResponse({"equivalentPlasticStrains"})};
         solids.push_back(std::move(cell));
         break;
       case CellKind::Quad:
         if (nodes.size() != 4) continue;
         // The quads' nodes run counterclockwise, as VTK_QUAD's.
         cell.vtkType = kVtkQuad;
-        cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"})};
+        cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
+                          element->setResponse({"plasticStrains"}), element->setResponse({"equivalentPlasticStrains"})};
         quads.push_back(std::move(cell));
         break;
       case CellKind::Beam:
@@ -542,6 +544,31 @@ void PVDRecorder::writeGrid(Domain& domain, double time, const std::string& path
         if (c.kind == CellKind::Solid) appendTuple(out, gaussPointMean(c.responses[which]), digits);
         else if (c.kind == CellKind::Quad) appendTuple(out, planeMean(c.responses[which]), digits);
         else appendTuple(out, zero6, digits);
+      }
+      closeArray(out);
+    }
+    // Plastic materials (J2Plasticity, DruckerPrager): the Gauss-point mean of
+    // the plastic strain (6 components, engineering shears; a quad's too) and
+    // of the equivalent plastic strain; 0 for cells without a plastic state.
+    bool plastic = false;
+    for (const Cell& c : cells_)
+      if ((c.kind == CellKind::Solid || c.kind == CellKind::Quad) && c.responses.size() > 3 && c.responses[2])
+        plastic = true;
+    if (plastic) {
+      openArray(out, "Float64", "plasticStrain", 6);
+      for (const Cell& c : cells_) {
+        const bool cellHas = (c.kind == CellKind::Solid || c.kind == CellKind::Quad) && c.responses.size() > 3;
+        appendTuple(out, cellHas ? gaussPointMean(c.responses[2]) : zero6, digits);
+      }
+      closeArray(out);
+      openArray(out, "Float64", "equivalentPlasticStrain", 1);
+      for (const Cell& c : cells_) {
+        Eigen::Matrix<double, 1, 1> mean = Eigen::Matrix<double, 1, 1>::Zero();
+        if ((c.kind == CellKind::Solid || c.kind == CellKind::Quad) && c.responses.size() > 3 && c.responses[3]) {
+          const Vector v = c.responses[3].value();
+          if (v.size() > 0) mean(0) = v.mean();
+        }
+        appendTuple(out, mean, digits);
       }
       closeArray(out);
     }

@@ -75,7 +75,8 @@ class PVDRecorder : public Recorder {
     CellKind kind = CellKind::Solid;
     std::uint8_t vtkType = 0;
     std::vector<int> points;  // indices into points_
-    // Solid, Quad: stresses, strains; Beam/Truss: localForce; Contact: status,
+    // Solid, Quad: stresses, strains, plasticStrains, equivalentPlasticStrains
+    // (the last two empty for materials without a plastic state); Beam/Truss: localForce; Contact: status,
     // gap, forcescalar, frictionforce, normal.
     std::vector<Response> responses;
   };

@@ -27,7 +27,7 @@ std::unique_ptr<Element> buildBbarQuad(CommandArgs& args, Domain& domain) {
   const auto [tag, nodeTags] = solidargs::quadTagAndNodes(args, domain, "bbarQuad");
   const double thickness = solidargs::thickness(args);
   const NDMaterial& material =
-      solidargs::material(args, domain, "AxiSymmetric", "bbarQuad (it uses the 3D law with e23 = e13 = 0)");
+      solidargs::material(args, domain, "AxiSymmetric", "bbarQuad (nor a ThreeDimensional one to use with e23 = e13 = 0)");
   if (!args.done())
     args.fail("bbarQuad takes no arguments after matTag (element('bbarQuad', tag, *4 nodes, thick, matTag)); got " +
               std::to_string(args.remaining()) + " more");

@@ -1,33 +1,12 @@
 #include "elements/ForceBeamColumn2d.h"
 
 #include <cmath>
+#include <iostream>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
-#include "core/ElementStateError.h"
 
 namespace beamsolid {
-
-namespace {
-
-using SectionMatrix = SectionBeamColumn2d::SectionMatrix;
-
-// f = ks^-1, regularized as in ForceBeamColumn3d when a mode has lost all
-// stiffness (every fiber yielded).
-void sectionFlexibility(const SectionMatrix& k, const SectionMatrix& initial, SectionMatrix& f) {
-  const int n = static_cast<int>(k.rows());
-  Eigen::LDLT<SectionMatrix> ldlt(k);
-  const auto d = ldlt.vectorD().cwiseAbs();
-  if (ldlt.info() == Eigen::Success && d.minCoeff() > 1e-12 * d.maxCoeff()) {
-    f = ldlt.solve(SectionMatrix::Identity(n, n));
-    return;
-  }
-  SectionMatrix regularized = k;
-  regularized.diagonal() += 1e-9 * initial.diagonal().cwiseAbs();
-  f = regularized.fullPivLu().solve(SectionMatrix::Identity(n, n));
-}
-
-}  // namespace
 
 ForceBeamColumn2d::ForceBeamColumn2d(int tag, Definition&& definition)
     : SectionBeamColumn2d(tag, std::move(definition)) {}
@@ -48,130 +27,52 @@ SectionBeamColumn2d::Interpolation ForceBeamColumn2d::forceInterpolation(const s
 }
 
 void ForceBeamColumn2d::initializeState() {
-  const std::size_t n = sections_.size();
   interpolation_.clear();
-  loadForces_.clear();
-  flexibility_.clear();
-  unbalance_.clear();
-  Matrix3 F = Matrix3::Zero();
-  for (std::size_t i = 0; i < n; ++i) {
-    const int order = sections_[i]->order();
+  std::vector<double> weightLength;
+  for (std::size_t i = 0; i < sections_.size(); ++i) {
     interpolation_.push_back(forceInterpolation(sections_[i]->codes(), xi_[i], length_));
-    loadForces_.push_back(SectionVector::Zero(order));
-    unbalance_.push_back(SectionVector::Zero(order));
-    SectionMatrix f(order, order);
-    sectionFlexibility(sections_[i]->initialTangent(), sections_[i]->initialTangent(), f);
-    flexibility_.push_back(f);
-    const Interpolation& b = interpolation_.back();
-    F += weights_[i] * length_ * b.transpose() * f * b;
+    weightLength.push_back(weights_[i] * length_);
   }
-  initialBasicStiffness_ = F.ldlt().solve(Matrix3::Identity());
-  q_.setZero();
-  kb_ = initialBasicStiffness_;
-  solvedDeformation_.setZero();
-  committedForce_.setZero();
-  committedStiffness_ = kb_;
-  committedDeformation_.setZero();
-}
-
-bool ForceBeamColumn2d::iterate(const Vector3& v) {
-  const int n = numSections();
-  double reference = 0.0;
-  for (int iteration = 0;; ++iteration) {
-    Matrix3 F = Matrix3::Zero();
-    Vector3 compatible = Vector3::Zero();
-    double sectionWork = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const SectionForceDeformation2d& s = *sections_[i];
-      const Interpolation& b = interpolation_[i];
-      sectionFlexibility(s.tangent(), s.initialTangent(), flexibility_[i]);
-      unbalance_[i] = b * q_ + loadForces_[i] - s.force();
-      const SectionVector correction = flexibility_[i] * unbalance_[i];
-      const double wL = weights_[i] * length_;
-      F.noalias() += wL * b.transpose() * flexibility_[i] * b;
-      compatible.noalias() += wL * b.transpose() * (s.deformation() + correction);
-      sectionWork += wL * std::fabs(unbalance_[i].dot(correction));
-    }
-    const Eigen::LDLT<Matrix3> flexibility(F);
-    if (flexibility.info() != Eigen::Success) return false;
-    const Vector3 dv = v - compatible;
-    const Vector3 dq = flexibility.solve(dv);
-    const double work = std::fabs(dq.dot(dv)) + sectionWork;
-    if (!std::isfinite(work)) return false;
-    if (iteration == 0) reference = work;
-    // The correction is applied before the test (as in OpenSees): the
-    // element always follows a changed v, and the q it answers with carries
-    // the last correction, so Newton keeps its quadratic rate. tol bounds the
-    // work of the residuals itself (force x length in the model's units), as
-    // OpenSees' tol; the ratio 1e-28 only ends iterations on round-off.
-    ++lastIterations_;
-    q_ += dq;
-    for (int i = 0; i < n; ++i) {
-      const SectionVector de = flexibility_[i] * (unbalance_[i] + interpolation_[i] * dq);
-      sections_[i]->setTrialDeformation(sections_[i]->deformation() + de);
-    }
-    if (work <= options().tolerance || work <= 1e-28 * std::max(reference, std::fabs(q_.dot(v)))) {
-      kb_ = flexibility.solve(Matrix3::Identity());
-      return true;
-    }
-    if (iteration + 1 >= options().maxIterations) return false;
-  }
-}
-
-void ForceBeamColumn2d::restoreCommitted() {
-  for (auto& s : sections_) s->revertToLastCommit();
-  q_ = committedForce_;
-  kb_ = committedStiffness_;
+  initialBasicStiffness_ =
+      state_.initialize(sections_, interpolation_, std::move(weightLength), options().maxIterations, options().tolerance);
 }
 
 void ForceBeamColumn2d::solveState(const Vector3& v) {
-  lastIterations_ = 0;
-  loadsChanged_ = false;
-  solvedDeformation_ = v;
-  converged_ = iterate(v);
-  if (converged_) return;
-  for (int substeps = 2; substeps <= 32 && !converged_; substeps *= 2) {
-    restoreCommitted();
-    converged_ = true;
-    for (int k = 1; k <= substeps && converged_; ++k)
-      converged_ = iterate(committedDeformation_ + (double(k) / substeps) * (v - committedDeformation_));
-  }
-  if (!converged_)
-    throw ElementStateError(context() + ": element compatibility not reached (" +
-                            std::to_string(options().maxIterations) + " iterations per substep, tol " +
-                            std::to_string(options().tolerance) + ")");
+  // As OpenSees, an element that cannot reach compatibility warns and keeps
+  // the state of its last attempt; the global iterations go on from it.
+  if (!state_.update(v))
+    std::cerr << "WARNING " << context() << ": element compatibility not reached (" << options().maxIterations
+              << " iterations, tol " << options().tolerance << "); going on with the last state\n";
 }
 
 void ForceBeamColumn2d::ensureState() {
-  if (loadsChanged_) solveState(solvedDeformation_);
+  if (state_.loadsChanged()) solveState(state_.deformation());
 }
 
 void ForceBeamColumn2d::update() {
   transf_->update();
   const Vector3 v = transf_->basicTrialDisp();
-  // New element loads alone (v unchanged, as right after a load step is
-  // applied) wait for the next change of v, as in OpenSees: the first
-  // residual of a step then sees them through p0 only.
-  if (converged_ && v == solvedDeformation_) return;
+  // An unchanged v leaves the element as it is, as in OpenSees; new element
+  // loads alone (as right after a load step is applied) wait for the next
+  // change of v: the first residual of a step sees them through p0 only.
+  if (v == state_.deformation()) return;
   solveState(v);
 }
 
 // As OpenSees, new element loads reach q at the next state determination
 // (update()): until then the element answers with the forces it has, and
 // only the basic system's reactions p0 follow the loads at once.
-ForceBeamColumn2d::Vector3 ForceBeamColumn2d::basicForce() { return q_; }
+ForceBeamColumn2d::Vector3 ForceBeamColumn2d::basicForce() { return state_.force(); }
 
-const ForceBeamColumn2d::Matrix3& ForceBeamColumn2d::basicStiffness() { return kb_; }
+const ForceBeamColumn2d::Matrix3& ForceBeamColumn2d::basicStiffness() { return state_.stiffness(); }
 
 ForceBeamColumn2d::Vector3 ForceBeamColumn2d::plasticDeformation() {
   // v minus the elastic deformations of the section forces b q + s_load:
   // an elastic element under element loads has none.
   Vector3 elastic = Vector3::Zero();
   for (int i = 0; i < numSections(); ++i) {
-    const SectionForceDeformation2d& s = *sections_[i];
-    SectionMatrix f(s.order(), s.order());
-    sectionFlexibility(s.initialTangent(), s.initialTangent(), f);
-    elastic += weights_[i] * length_ * interpolation_[i].transpose() * f * (interpolation_[i] * q_ + loadForces_[i]);
+    elastic += weights_[i] * length_ * interpolation_[i].transpose() * state_.initialFlexibility(i) *
+               (interpolation_[i] * state_.force() + state_.loadForces(std::size_t(i)));
   }
   return basicDeformation() - elastic;
 }
@@ -180,38 +81,24 @@ void ForceBeamColumn2d::commitState() {
   ensureState();
   transf_->commitState();
   for (auto& s : sections_) s->commitState();
-  committedForce_ = q_;
-  committedStiffness_ = kb_;
-  committedDeformation_ = solvedDeformation_;
+  state_.commit();
 }
 
 void ForceBeamColumn2d::revertToLastCommit() {
   transf_->revertToLastCommit();
-  restoreCommitted();
-  solvedDeformation_ = committedDeformation_;
-  converged_ = true;
-  loadsChanged_ = true;
+  for (auto& s : sections_) s->revertToLastCommit();
+  state_.revertToLastCommit();
 }
 
 void ForceBeamColumn2d::revertToStart() {
   transf_->revertToStart();
   for (auto& s : sections_) s->revertToStart();
-  q_.setZero();
-  kb_ = initialBasicStiffness_;
-  solvedDeformation_.setZero();
-  committedForce_.setZero();
-  committedStiffness_ = kb_;
-  committedDeformation_.setZero();
-  converged_ = true;
-  loadsChanged_ = true;
+  state_.revertToStart();
 }
 
 void ForceBeamColumn2d::zeroLoad() {
   zeroLoadReactions();
-  for (SectionVector& s : loadForces_) {
-    if (!s.isZero(0.0)) loadsChanged_ = true;
-    s.setZero();
-  }
+  state_.zeroLoad();
 }
 
 void ForceBeamColumn2d::addLoad(const ElementLoad& load, double factor) {
@@ -223,7 +110,7 @@ void ForceBeamColumn2d::addLoad(const ElementLoad& load, double factor) {
   for (int i = 0; i < numSections(); ++i) {
     const double x = xi_[i] * L;
     const std::vector<SectionCode>& codes = sections_[i]->codes();
-    SectionVector& s = loadForces_[i];
+    SectionVector& s = state_.changeLoadForces(std::size_t(i));
     for (int r = 0; r < static_cast<int>(codes.size()); ++r) {
       switch (codes[r]) {
         case SectionCode::P:
@@ -242,7 +129,6 @@ void ForceBeamColumn2d::addLoad(const ElementLoad& load, double factor) {
       }
     }
   }
-  loadsChanged_ = true;
 }
 
 std::unique_ptr<Element> ForceBeamColumn2d::build(CommandArgs& args, Domain& domain, const std::string& type) {

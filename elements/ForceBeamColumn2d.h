@@ -1,4 +1,5 @@
 #pragma once
+#include "elements/ForceBeamCompatibility.h"
 #include "elements/SectionBeamColumn2d.h"
 
 namespace beamsolid {
@@ -7,9 +8,17 @@ namespace beamsolid {
 // model with -ndm 2): the section forces follow the basic forces exactly,
 // s(xi) = b(xi) q + s_load(xi) with, per section component,
 //   P: N,   Mz: (xi - 1) M_i + xi M_j,   Vy: (M_i + M_j) / L,
-// and compatibility v = sum w L b^T e is restored by Newton iterations on q
-// (Spacone, Filippou and Taucer 1996), in substeps from the committed state
-// when they do not converge. Default rule of the older form: Lobatto.
+// and compatibility v = sum w L b^T e is restored by the iterations of
+// ForceBeamCompatibility (as OpenSees' element). Default rule of the older
+// form: Lobatto.
+struct ForceBeamTraits2d {
+  using Section = SectionForceDeformation2d;
+  using SectionVector = SectionForceDeformation2d::Vector;
+  using SectionMatrix = SectionForceDeformation2d::Matrix;
+  using Interpolation = SectionBeamColumn2d::Interpolation;
+  static constexpr int kBasic = 3;
+};
+
 class ForceBeamColumn2d : public SectionBeamColumn2d {
  public:
   ForceBeamColumn2d(int tag, Definition&& definition);
@@ -31,34 +40,18 @@ class ForceBeamColumn2d : public SectionBeamColumn2d {
 
   // Force interpolation b(xi) of one section (rows follow its codes).
   static Interpolation forceInterpolation(const std::vector<SectionCode>& codes, double xi, double length);
-  bool converged() const { return converged_; }
-  int lastIterations() const { return lastIterations_; }
+  bool converged() const { return state_.converged(); }
+  int lastIterations() const { return state_.iterations(); }
 
  protected:
   void initializeState() override;
 
  private:
   void solveState(const Vector3& v);
-  bool iterate(const Vector3& v);
-  void restoreCommitted();
   void ensureState();
 
-  Vector3 q_ = Vector3::Zero();
-  Matrix3 kb_ = Matrix3::Zero();
-  Vector3 solvedDeformation_ = Vector3::Zero();
-  bool converged_ = true;
-  bool loadsChanged_ = false;
-  int lastIterations_ = 0;
-
-  Vector3 committedForce_ = Vector3::Zero();
-  Matrix3 committedStiffness_ = Matrix3::Zero();
-  Vector3 committedDeformation_ = Vector3::Zero();
-
-  // Per section: b(xi), forces of element loads, and iteration workspace.
+  ForceBeamCompatibility<ForceBeamTraits2d> state_;
   std::vector<Interpolation> interpolation_;
-  std::vector<SectionVector> loadForces_;
-  std::vector<SectionMatrix> flexibility_;
-  std::vector<SectionVector> unbalance_;
 };
 
 }  // namespace beamsolid

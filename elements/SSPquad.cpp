@@ -35,10 +35,9 @@ namespace {
 std::unique_ptr<Element> buildSSPquad(CommandArgs& args, Domain& domain) {
   const auto [tag, nodeTags] = solidargs::quadTagAndNodes(args, domain, "SSPquad");
   // matTag comes before type; its form is checked once the type is known.
-  const std::size_t matAt = args.position();
   const int matTag = args.nextInt("matTag");
   const std::string type = solidargs::planeType(args);
-  const NDMaterial& material = solidargs::materialOfTag(args, domain, matTag, matAt, type, "SSPquad");
+  const NDMaterial& material = solidargs::materialOfTag(args, domain, matTag, type, "SSPquad");
   const double thickness = solidargs::thickness(args);
   const std::vector<double> b = solidargs::bodyForce(args, 2, "b1 b2");
   args.expectEnd();

@@ -7,6 +7,7 @@
 #include "core/Domain.h"
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
+#include "elements/GaussPointResponse.h"
 #include "materials/nd/AxiSymmetricFrom3D.h"
 
 namespace beamsolid {
@@ -229,6 +230,11 @@ Response SolidElement<Dim>::setResponse(const std::vector<std::string>& args) {
       }
     return {names, [this] { return Vector(resistingForce()); }};
   }
+  // Plastic state of every material point (materials that have one:
+  // J2Plasticity, DruckerPrager): 6 components (engineering shears) or 1 per point.
+  if (what == "plasticStrains" || what == "plasticStrain") return gaussPointResponse(materials_, {"plasticStrain"});
+  if (what == "equivalentPlasticStrains" || what == "equivalentPlasticStrain")
+    return gaussPointResponse(materials_, {"equivalentPlasticStrain"});
   if ((what == "material" || what == "integrPoint") && args.size() >= 2) {
     int point = 0;
     if (!parseIndex(args[1], point) || point < 1 || point > materialPoints()) return {};
@@ -330,18 +336,16 @@ std::pair<int, std::array<int, 4>> quadTagAndNodes(CommandArgs& args, const Doma
 }
 
 const NDMaterial& material(CommandArgs& args, Domain& domain, const std::string& kind, const std::string& forWhat) {
-  const std::size_t at = args.position();
   const int matTag = args.nextInt("matTag");
-  return materialOfTag(args, domain, matTag, at, kind, forWhat);
+  return materialOfTag(args, domain, matTag, kind, forWhat);
 }
 
-const NDMaterial& materialOfTag(CommandArgs& args, Domain& domain, int matTag, std::size_t at, const std::string& kind,
+const NDMaterial& materialOfTag(CommandArgs& args, Domain& domain, int matTag, const std::string& kind,
                                 const std::string& forWhat) {
   const NDMaterial& m = domain.ndMaterials.get(matTag, args.context());
   if (!SolidElement<3>::materialCopy(m, kind))
-    args.failAt(at, "matTag",
-                "an nDMaterial with a " + kind + " form for " + forWhat + "; nDMaterial " + std::to_string(matTag) +
-                    " (" + m.className() + ") has none");
+    args.fail("nDMaterial " + std::to_string(matTag) + " (" + m.className() + ") has no " + kind + " form for " +
+              forWhat);
   return m;
 }
 

@@ -70,7 +70,10 @@ class SolidElement : public Element {
 
   // 'stresses'/'stress' and 'strains'/'strain' (every material point's
   // vector, in point order), 'force'/'forces'/'globalForce'/'globalForces'
-  // (P<dof>_<node>), 'material'/'integrPoint' k ... (k = 1..points).
+  // (P<dof>_<node>), 'material'/'integrPoint' k ... (k = 1..points),
+  // 'plasticStrains' (points x 6, the 3D plastic strain) and
+  // 'equivalentPlasticStrains' (points) when the material has a plastic
+  // state (ours).
   Response setResponse(const std::vector<std::string>& args) override;
   // Forwarded to every material point; true when any accepted it.
   bool setParameter(const std::vector<std::string>& args, double value) override;
@@ -153,8 +156,8 @@ void requireSpace(CommandArgs& args, const Domain& domain, int ndm, const std::s
 std::pair<int, std::array<int, 4>> quadTagAndNodes(CommandArgs& args, const Domain& domain, const std::string& type);
 // The nDMaterial of matTag, checked to have form `kind`.
 const NDMaterial& material(CommandArgs& args, Domain& domain, const std::string& kind, const std::string& forWhat);
-// The same for a matTag already read at argument `at`.
-const NDMaterial& materialOfTag(CommandArgs& args, Domain& domain, int matTag, std::size_t at, const std::string& kind,
+// The same for a matTag already read.
+const NDMaterial& materialOfTag(CommandArgs& args, Domain& domain, int matTag, const std::string& kind,
                                 const std::string& forWhat);
 
 // element(type, tag, *8 nodes, matTag, <b1, b2, b3>): what every brick reads.

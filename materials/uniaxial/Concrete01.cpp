@@ -47,8 +47,11 @@ void Concrete01::unloadingLine(double minStrain, double& slope, double& zeroStre
 void Concrete01::setTrialStrain(double strain, double) {
   const State& c = committed_;
   trial_ = c;
+  // A change below machine epsilon is no change (as OpenSees, found by running it): the
+  // committed state, strain and tangent stay, so round-off in a fiber's strain cannot pick a
+  // branch, nor can such changes add up.
+  if (std::fabs(strain - c.strain) < std::numeric_limits<double>::epsilon()) return;
   trial_.strain = strain;
-  if (strain == c.strain) return;
 
   if (strain < c.minStrain) {
     envelope_.evaluate(strain, trial_.stress, trial_.tangent);

@@ -1,6 +1,7 @@
 #include "materials/uniaxial/Concrete02.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
@@ -51,7 +52,10 @@ void Concrete02::setTrialStrain(double strain, double) {
   trial_ = c;
   trial_.strain = strain;
   const double step = strain - c.strain;
-  if (step == 0.0) return;
+  // A change below machine epsilon keeps the committed stress and tangent (as OpenSees, found
+  // by running it), so round-off in a fiber's strain cannot pick a branch; unlike Concrete01
+  // the new strain is kept, and the next change counts from it.
+  if (std::fabs(step) < std::numeric_limits<double>::epsilon()) return;
 
   if (strain < c.minStrain) {
     envelope_.evaluate(strain, trial_.stress, trial_.tangent);

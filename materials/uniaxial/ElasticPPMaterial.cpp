@@ -21,6 +21,17 @@ std::unique_ptr<UniaxialMaterial> ElasticPPMaterial::clone() const {
 }
 
 void ElasticPPMaterial::setTrialStrain(double strain, double) {
+  // A change below machine epsilon keeps the committed stress and tangent (as OpenSees, found
+  // by running it; unlike Steel01 the new strain is kept, so the next change counts from it).
+  if (std::fabs(strain - committedStrain_) < std::numeric_limits<double>::epsilon()) {
+    revertToLastCommit();
+    trialStrain_ = strain;
+    return;
+  }
+  trialFrom(strain);
+}
+
+void ElasticPPMaterial::trialFrom(double strain) {
   trialStrain_ = strain;
   const double fyP = E_ * epsyP_;
   const double fyN = E_ * epsyN_;
@@ -64,7 +75,7 @@ void ElasticPPMaterial::revertToLastCommit() {
 
 void ElasticPPMaterial::revertToStart() {
   committedPlasticStrain_ = 0.0;
-  setTrialStrain(0.0);
+  trialFrom(0.0);
   commitState();
 }
 

@@ -29,6 +29,9 @@ class ElasticPPMaterial : public UniaxialMaterial {
   void print(std::ostream& os) const override;
 
  private:
+  // The trial state at `strain` from the committed plastic strain.
+  void trialFrom(double strain);
+
   double E_, epsyP_, epsyN_, eps0_;
   double trialStrain_ = 0.0, trialStress_ = 0.0, trialTangent_;
   double trialPlasticStrain_ = 0.0;

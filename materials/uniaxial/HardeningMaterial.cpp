@@ -29,6 +29,10 @@ void HardeningMaterial::setTrialStrain(double strain, double) {
   // over the iterations of one step).
   const State& c = committed_;
   trial_ = c;
+  // A change below machine epsilon is no change (as OpenSees, found by running it): the
+  // committed state, strain and tangent stay, so round-off in a fiber's strain cannot pick a
+  // branch, nor can such changes add up.
+  if (std::fabs(strain - c.strain) < std::numeric_limits<double>::epsilon()) return;
   trial_.strain = strain;
   const double predictor = E_ * (strain - c.plasticStrain);
   const double relative = predictor - c.backStress;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
@@ -133,7 +134,10 @@ void HystereticMaterial::setTrialStrain(double strain, double) {
   const State& c = committed_;
   trial_ = c;
   const double increment = strain - c.strain;
-  if (increment == 0.0) return;
+  // A change below machine epsilon is no change (as OpenSees, found by running it): the
+  // committed state, strain and tangent stay, so round-off in a fiber's strain cannot pick a
+  // branch, nor can such changes add up.
+  if (std::fabs(increment) < std::numeric_limits<double>::epsilon()) return;
   State& t = trial_;
   t.strain = strain;
   t.direction = increment > 0.0 ? 1 : -1;

@@ -1,6 +1,7 @@
 #include "materials/uniaxial/MultiLinear.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
@@ -27,10 +28,12 @@ MultiLinear::MultiLinear(int tag, const std::vector<double>& strains, const std:
 std::unique_ptr<UniaxialMaterial> MultiLinear::clone() const { return std::make_unique<MultiLinear>(*this); }
 
 void MultiLinear::setTrialStrain(double strain, double) {
-  // The committed strain again keeps the committed state: a spring that
-  // stopped on its yield limit would otherwise look elastic (tangent too stiff
-  // for the next Newton step; OpenSees keeps the yielding tangent).
-  if (strain == committedStrain_) {
+  // The committed strain again, to within machine epsilon (as OpenSees, found
+  // by running it), keeps the committed state: a spring that stopped on its
+  // yield limit would otherwise look elastic (tangent too stiff for the next
+  // Newton step; OpenSees keeps the yielding tangent), and round-off in a
+  // strain cannot pick a branch.
+  if (std::fabs(strain - committedStrain_) < std::numeric_limits<double>::epsilon()) {
     revertToLastCommit();
     return;
   }

@@ -1,6 +1,7 @@
 #include "materials/uniaxial/Steel01.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
@@ -29,9 +30,12 @@ double Steel01::growth(double a, double aStrain, double strainRange) const {
 void Steel01::setTrialStrain(double strain, double) {
   const State& c = committed_;
   trial_ = c;
-  trial_.strain = strain;
   const double step = strain - c.strain;
-  if (step == 0.0) return;
+  // A change below machine epsilon is no change (as OpenSees, found by running it): the
+  // committed state, strain and tangent stay, so round-off in a fiber's strain cannot pick a
+  // branch, nor can such changes add up.
+  if (std::fabs(step) < std::numeric_limits<double>::epsilon()) return;
+  trial_.strain = strain;
 
   // Elastic predictor from the committed state, clipped to the yield lines.
   const double hardening = b_ * E0_;

