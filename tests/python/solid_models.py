@@ -194,7 +194,7 @@ def footing_mesh(nx, ny, half_width=1.0, width=5.0, depth=4.0, grading=1.6):
 
 
 def strip_footing(m, etype, nx, ny, su=1.0, E=1000.0, nu=0.49, settlement=0.05, steps=25, algorithm=("Newton",),
-                  **mesh):
+                  adaptive=True, **mesh):
     """A rigid smooth strip footing (half width 1) pushed into weightless
     von Mises soil (nDMaterial J2Plasticity, perfectly plastic, yield stress
     sqrt(3) su so that the plane-strain shear strength is su) by imposed
@@ -202,7 +202,8 @@ def strip_footing(m, etype, nx, ny, su=1.0, E=1000.0, nu=0.49, settlement=0.05, 
     mesh is footing_mesh(nx, ny); the far side and the bottom are on rollers.
     Returns the bearing pressures q / su (the footing reaction over the half
     width) after each converged step (beamsolid.stepping.adaptive_analyze:
-    nominal steps of settlement / steps, cut where Newton fails)."""
+    nominal steps of settlement / steps, cut where Newton fails; with
+    adaptive=False fixed steps until the first failure, for OpenSeesPy)."""
     xs, ys = footing_mesh(nx, ny, **mesh)
     ys = ys[::-1]  # bottom (j = 0) to surface (j = ny)
     brick = etype in BRICKS
@@ -234,6 +235,12 @@ def strip_footing(m, etype, nx, ny, su=1.0, E=1000.0, nu=0.49, settlement=0.05, 
         total = sum(m.nodeReaction(tag(i, nj, k), 2) for i in footing for k in range(layers))
         q.append(abs(total) / (0.25 if brick else 1.0) / su)
 
+    if not adaptive:
+        for k in range(steps):
+            if m.analyze(1) != 0:
+                break
+            record((k + 1) / steps, m.testIter())
+        return q
     # Steps of settlement / steps, halved (down to 1/64) where Newton fails:
     # the first plastic steps at the footing edge need them on fine meshes.
     from beamsolid.stepping import adaptive_analyze

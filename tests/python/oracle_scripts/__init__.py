@@ -48,4 +48,5 @@ SCRIPTS = (
     "example3_cantilever",
     "force_beam_iterations",
     "solid_elements",
+    "solid_footing",
 )

@@ -39,6 +39,9 @@ TOLERANCES = (
     ("penalty.pull*.master*", 1e-7),
     # time_series: series values are closed forms evaluated at the same times.
     ("ts.*", 1e-12),
+    # solid_footing: 25 plastic steps of J2 soil; OpenSeesPy's J2 return stops ~5e-9 short of the exact
+    # stress (its local tolerance), which the path carries to ~1e-7 in the displacements.
+    ("footing.*", 2e-7),
     ("*", 1e-8),
 )
 
@@ -104,6 +107,8 @@ KNOWN_DIFFERENCES = {
         "OpenSees' differs and is not invariant under rotation); 0.1-0.3 % in displacements, 0.3-1.3 % in "
         "element forces and stresses, 1.8 % in the SSPquad frequencies here. Regular meshes and the patch "
         "test on these meshes agree to 1e-14",
+    ("solid_footing", "footing.bbarQuad.edge.stresses"):
+        "bbarQuad stresses: OpenSeesPy 3.7.1 writes 11 22 33 33 per Gauss point (see solid_elements)",
     ("solid_elements", "SSPquad.*.distorted.sw.disp"):
         "see SSP*.distorted.[de]*: the self-weight stage on the distorted mesh",
     ("solid_elements", "SSPbrick.distorted.reactionSum"):
