@@ -7,10 +7,11 @@ namespace beamsolid {
 void BbarBrick::formStrainDisplacement(int g, StrainDisplacement& B) const {
   StdBrick::formStrainDisplacement(g, B);
   const Cell::ShapeGradients& d = cell().gradients(g);
+  const Cell::ShapeGradients& mean = cell().meanGradients();
   for (int a = 0; a < kNodes; ++a)
     for (int i = 0; i < 3; ++i) {
-      // The dilatation of dof (a, i) is d(a, i) at the point and meanGradients_(a, i) on average.
-      const double shift = (meanGradients_(a, i) - d(a, i)) / 3.0;
+      // The dilatation of dof (a, i) is d(a, i) at the point and mean(a, i) on average.
+      const double shift = (mean(a, i) - d(a, i)) / 3.0;
       for (int row = 0; row < 3; ++row) B(row, 3 * a + i) += shift;
     }
 }

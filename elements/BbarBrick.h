@@ -21,11 +21,7 @@ class BbarBrick : public StdBrick {
   std::string className() const override { return "bbarBrick"; }
 
  protected:
-  void prepare() override { meanGradients_ = cell().meanGradients(); }
   void formStrainDisplacement(int g, StrainDisplacement& B) const override;
-
- private:
-  Cell::ShapeGradients meanGradients_ = Cell::ShapeGradients::Zero();
 };
 
 }  // namespace beamsolid

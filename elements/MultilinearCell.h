@@ -101,6 +101,9 @@ class MultilinearCell {
       volume_ += detJ;
       nodalVolume_ += detJ * shapeFunctions(xi);
     }
+    meanGradients_.setZero();
+    for (int g = 0; g < kGaussPoints; ++g) meanGradients_ += detJ_[g] * gradients_[g];
+    meanGradients_ /= volume_;
     centreJacobian_ = X.transpose() * naturalGradients(Point::Zero());
   }
 
@@ -113,12 +116,9 @@ class MultilinearCell {
   double volume() const { return volume_; }
   // integral of N_a dV: node a's share of the volume (row-sum lumping).
   const Eigen::Matrix<double, kNodes, 1>& nodalVolume() const { return nodalVolume_; }
-  // The mean shape function gradient (1/V) integral(grad N_a dV).
-  ShapeGradients meanGradients() const {
-    ShapeGradients mean = ShapeGradients::Zero();
-    for (int g = 0; g < kGaussPoints; ++g) mean += detJ_[g] * gradients_[g];
-    return mean / volume_;
-  }
+  // The mean shape function gradients (1/V) integral(grad N_a dV): B-bar's
+  // dilatation, the single-point elements' strain.
+  const ShapeGradients& meanGradients() const { return meanGradients_; }
   // dx / dxi at the centre.
   const Jacobian& centreJacobian() const { return centreJacobian_; }
   // x of natural point xi.
@@ -139,6 +139,7 @@ class MultilinearCell {
   double detJ_[kGaussPoints] = {};
   double volume_ = 0.0;
   Eigen::Matrix<double, kNodes, 1> nodalVolume_ = Eigen::Matrix<double, kNodes, 1>::Zero();
+  ShapeGradients meanGradients_ = ShapeGradients::Zero();
   Jacobian centreJacobian_ = Jacobian::Identity();
 };
 

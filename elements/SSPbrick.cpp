@@ -58,7 +58,7 @@ Eigen::Matrix<double, 6, kEnhanced> enhancedModes(const Matrix3& g, const Vector
 
 void SSPbrick::formStabilization(const StrainMatrix& D0, NodalMatrix& K) const {
   const Cell::NodeCoordinates& X = cell().nodeCoordinates();
-  const Cell::ShapeGradients b = cell().meanGradients();
+  const Cell::ShapeGradients& b = cell().meanGradients();
   const Matrix3 J0 = cell().centreJacobian();
   const Matrix3 g = J0.inverse();  // g(m, i) = d xi_m / d x_i
   const double detJ0 = J0.determinant();

@@ -10,7 +10,7 @@ SSPquad::SSPquad(int tag, const std::array<int, kNodes>& nodeTags, const NDMater
 
 void SSPquad::formStabilization(const StrainMatrix& D0, NodalMatrix& K) const {
   const Cell::NodeCoordinates& X = cell().nodeCoordinates();
-  const Cell::ShapeGradients b = cell().meanGradients();
+  const Cell::ShapeGradients& b = cell().meanGradients();
   // Hourglass vector h and its part orthogonal to the linear fields (gamma . x = gamma . y = 0).
   const Eigen::Vector4d h(1.0, -1.0, 1.0, -1.0);
   const Eigen::Vector4d gamma = 0.25 * (h - (h.dot(X.col(0))) * b.col(0) - (h.dot(X.col(1))) * b.col(1));

@@ -8,7 +8,6 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "elements/GaussPointResponse.h"
-#include "materials/nd/AxiSymmetricFrom3D.h"
 
 namespace beamsolid {
 
@@ -22,12 +21,6 @@ bool parseIndex(const std::string& s, int& out) {
 }  // namespace
 
 template <int Dim>
-std::unique_ptr<NDMaterial> SolidElement<Dim>::materialCopy(const NDMaterial& material, const std::string& kind) {
-  if (kind == "AxiSymmetric") return AxiSymmetricFrom3D::copyOf(material);
-  return material.clone(kind);
-}
-
-template <int Dim>
 SolidElement<Dim>::SolidElement(int tag, const std::array<int, kNodes>& nodeTags, const NDMaterial& material,
                                 const std::string& kind, int points, double thickness, const BodyForce& bodyForce)
     : Element(tag, std::vector<int>(nodeTags.begin(), nodeTags.end())),
@@ -35,7 +28,7 @@ SolidElement<Dim>::SolidElement(int tag, const std::array<int, kNodes>& nodeTags
       thickness_(thickness),
       bodyForce_(bodyForce) {
   for (int p = 0; p < points; ++p) {
-    materials_.push_back(materialCopy(material, kind));
+    materials_.push_back(material.clone(kind));
     if (!materials_.back())
       throw OpenSeesError("element " + std::to_string(tag) + ": nDMaterial " + std::to_string(material.tag()) +
                           " (" + material.className() + ") has no " + kind + " form");
@@ -186,8 +179,6 @@ std::vector<std::string> SolidElement<Dim>::pointComponentNames(bool stress) con
     static const char* const strains[6] = {"eps11", "eps22", "eps33", "eps12", "eps23", "eps13"};
     return std::vector<std::string>(stress ? stresses : strains, (stress ? stresses : strains) + 6);
   }
-  if (size == 4) return stress ? std::vector<std::string>{"sigma11", "sigma22", "sigma33", "sigma12"}
-                               : std::vector<std::string>{"eta11", "eta22", "eta33", "eta12"};
   if (size == 3) return stress ? std::vector<std::string>{"sigma11", "sigma22", "sigma12"}
                                : std::vector<std::string>{"eta11", "eta22", "eta12"};
   return Response::numberedNames(stress ? "sigma" : "eps", static_cast<int>(size));
@@ -343,7 +334,7 @@ const NDMaterial& material(CommandArgs& args, Domain& domain, const std::string&
 const NDMaterial& materialOfTag(CommandArgs& args, Domain& domain, int matTag, const std::string& kind,
                                 const std::string& forWhat) {
   const NDMaterial& m = domain.ndMaterials.get(matTag, args.context());
-  if (!SolidElement<3>::materialCopy(m, kind))
+  if (!m.clone(kind))
     args.fail("nDMaterial " + std::to_string(matTag) + " (" + m.className() + ") has no " + kind + " form for " +
               forWhat);
   return m;

@@ -45,7 +45,7 @@ class SolidElement : public Element {
   enum class MassKind { Consistent, RowSum, Uniform };
 
   // `kind` is the material form ("ThreeDimensional", "PlaneStrain",
-  // "PlaneStress", "AxiSymmetric"); `points` the number of material points.
+  // "PlaneStress"); `points` the number of material points.
   SolidElement(int tag, const std::array<int, kNodes>& nodeTags, const NDMaterial& material, const std::string& kind,
                int points, double thickness, const BodyForce& bodyForce);
 
@@ -93,10 +93,6 @@ class SolidElement : public Element {
   // The nodal forces of the element's own loads (body force, and what a
   // formulation adds), which resistingForce() subtracts.
   virtual NodalVector appliedLoad() const;
-
-  // A copy of `material` in form `kind` ("AxiSymmetric" falls back to the
-  // ThreeDimensional form, AxiSymmetricFrom3D); nullptr when it has none.
-  static std::unique_ptr<NDMaterial> materialCopy(const NDMaterial& material, const std::string& kind);
 
  protected:
   // Checks the nodes (ndm, ndf), builds the reference geometry, calls

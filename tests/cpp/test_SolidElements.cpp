@@ -17,7 +17,6 @@
 #include "elements/BbarQuad.h"
 #include "elements/SSPbrick.h"
 #include "elements/SSPquad.h"
-#include "materials/nd/AxiSymmetricFrom3D.h"
 #include "support/ErrorOf.h"
 
 using namespace beamsolid;
@@ -91,7 +90,7 @@ void setRandomDisplacements(Domain& d, double size, unsigned seed) {
 // A smooth nonlinear elastic law for tangent checks (no nonlinear nD
 // material exists yet): sigma = D eps + beta |eps|^2 eps, tangent D + beta
 // (2 eps eps^T + |eps|^2 I), initial tangent D; in the ThreeDimensional and
-// PlaneStrain forms (bbarQuad reaches it through AxiSymmetricFrom3D).
+// PlaneStrain forms (bbarQuad uses the ThreeDimensional one).
 class CubicElastic : public NDMaterial {
  public:
   CubicElastic(int tag, Matrix D, double beta) : NDMaterial(tag), D_(std::move(D)), beta_(beta) {
@@ -649,24 +648,26 @@ TEST(SolidElements, BadInputIsRefusedByName) {
   }
 }
 
-TEST(AxiSymmetricFrom3D, IsTheThreeDimensionalLawWithoutOutOfPlaneShear) {
+TEST(BbarQuad, ItsMaterialPointsAreThreeDimensionalWithoutOutOfPlaneShear) {
+  // The 3D law with e23 = e13 = 0: 'material' k 'stress' gives [11 22 33 12]
+  // (OpenSees' AxiSymmetric form), the 3D material the rest.
   Domain d;
-  addNDMaterial(d, "ElasticIsotropic", 1, kE, kNu, kRho);
-  const auto m = AxiSymmetricFrom3D::copyOf(d.ndMaterials.get(1, "test"));
-  ASSERT_TRUE(m);
-  Eigen::Vector4d e(1e-3, -2e-3, 5e-4, 3e-3);
-  m->setTrialStrain(e);
-  Eigen::Matrix<double, 6, 1> e6;
-  e6 << e(0), e(1), e(2), e(3), 0.0, 0.0;
-  const Vector s6 = isotropicD(kE, kNu) * e6;
-  EXPECT_LE((Vector(m->stress()) - s6.head(4)).cwiseAbs().maxCoeff(), 1e-12 * kE);
-  EXPECT_EQ(m->density(), kRho);
-  EXPECT_TRUE(m->isLinear());
-  EXPECT_EQ(m->setResponse({"stress"}).componentNames[3], "sigma12");
-  EXPECT_THROW(m->setTrialStrain(Eigen::Vector3d::Zero()), OpenSeesError);
-  const auto copy = m->clone("AxiSymmetric");
-  ASSERT_TRUE(copy);
-  EXPECT_EQ(Vector(copy->stress()), Vector(m->stress()));
+  Element& e = single(d, "bbarQuad");
+  setRandomDisplacements(d, 1e-3, 4);
+  e.update();
+  const auto& q = dynamic_cast<const SolidElement<2>&>(e);
+  for (int p = 0; p < q.materialPoints(); ++p) {
+    const Vector strain6 = q.material(p).strain(), stress6 = q.material(p).stress();
+    ASSERT_EQ(strain6.size(), 6);
+    EXPECT_EQ(strain6(4), 0.0);
+    EXPECT_EQ(strain6(5), 0.0);
+    EXPECT_LE((stress6 - isotropicD(kE, kNu) * strain6).cwiseAbs().maxCoeff(), 1e-12 * kE * strain6.norm());
+    const Response r = e.setResponse({"material", std::to_string(p + 1), "stress"});
+    ASSERT_EQ(r.size(), 4u);
+    EXPECT_EQ(r.componentNames[2], "sigma33");
+    EXPECT_EQ(r.value(), Vector(stress6.head(4)));
+  }
+  EXPECT_EQ(e.setResponse({"material", "1", "tangent"}).size(), 36u);
 }
 
 }  // namespace

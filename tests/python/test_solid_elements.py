@@ -170,29 +170,39 @@ def test_responses_and_class_names():
     ops.wipe()
 
 
+def _one_element_under_imposed_strain(path, etype, mat, strain, steps, increment, algorithm):
+    """One element (material `mat`: 1 elastic, 2 J2) whose nodes follow u_d =
+    e x_d for strain = (d, e) (0-based), in `steps` LoadControl steps, with
+    a PVD recorder at `path`; returns the recorder's folder."""
+    brick = etype in sm.BRICKS
+    (_unit_brick if brick else _unit_quad)(ops)
+    ops.nDMaterial("J2Plasticity", 2, 800.0, 300.0, 1.0, 1.0, 0.0, 0.0)
+    sm.element(ops, etype, 1, list(range(1, 9 if brick else 5)), mat, 0.5)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    direction, e = strain
+    for n in range(1, (9 if brick else 5)):
+        x = ops.nodeCoord(n)
+        for d in range(3 if brick else 2):
+            ops.sp(n, d + 1, e * x[d] if d == direction else 0.0)
+    ops.constraints("Transformation")
+    ops.system("UmfPack")
+    ops.numberer("Plain")
+    ops.test("NormDispIncr", 1e-12, 20)
+    ops.algorithm(algorithm)
+    ops.integrator("LoadControl", increment)
+    ops.analysis("Static")
+    name = str(path)
+    ops.recorder("PVD", name)
+    assert ops.analyze(steps) == 0
+    return name
+
+
 @pytest.mark.parametrize("etype", ["bbarQuad", "SSPquad", "bbarBrick", "SSPbrick"])
 def test_pvd_recorder_writes_the_cells_and_their_mean_stress(tmp_path, etype):
     # A uniform strain: every cell's stress is the material point stress.
     brick = etype in sm.BRICKS
-    (_unit_brick if brick else _unit_quad)(ops)
-    sm.element(ops, etype, 1, list(range(1, 9 if brick else 5)), 1, 0.5)
-    ops.timeSeries("Constant", 1)
-    ops.pattern("Plain", 1, 1)
-    dim = 3 if brick else 2
-    for n in range(1, (9 if brick else 5)):
-        x = ops.nodeCoord(n)
-        for d in range(dim):
-            ops.sp(n, d + 1, 1e-3 * x[0] if d == 0 else 0.0)
-    ops.constraints("Transformation")
-    ops.system("UmfPack")
-    ops.numberer("Plain")
-    ops.test("NormDispIncr", 1e-12, 5)
-    ops.algorithm("Linear")
-    ops.integrator("LoadControl", 1.0)
-    ops.analysis("Static")
-    name = str(tmp_path / "solid")
-    ops.recorder("PVD", name)
-    assert ops.analyze(1) == 0
+    name = _one_element_under_imposed_strain(tmp_path / "solid", etype, 1, (0, 1e-3), 1, 1.0, "Linear")
     ops.wipe()
     vtu = sorted(os.listdir(name))[-1]
     grid = ET.parse(os.path.join(name, vtu)).getroot()
@@ -268,26 +278,7 @@ def test_plastic_strains_reach_the_responses_and_the_pvd_recorder(tmp_path, etyp
     # material point has the same plastic strain, reported per point and as
     # the cells' mean by the PVD recorder.
     brick = etype in sm.BRICKS
-    (_unit_brick if brick else _unit_quad)(ops)
-    ops.nDMaterial("J2Plasticity", 2, 800.0, 300.0, 1.0, 1.0, 0.0, 0.0)
-    sm.element(ops, etype, 1, list(range(1, 9 if brick else 5)), 2, 0.5)
-    ops.timeSeries("Linear", 1)
-    ops.pattern("Plain", 1, 1)
-    dim = 3 if brick else 2
-    for n in range(1, (9 if brick else 5)):
-        x = ops.nodeCoord(n)
-        for d in range(dim):
-            ops.sp(n, d + 1, -1e-2 * x[1] if d == 1 else 0.0)
-    ops.constraints("Transformation")
-    ops.system("UmfPack")
-    ops.numberer("Plain")
-    ops.test("NormDispIncr", 1e-12, 20)
-    ops.algorithm("Newton")
-    ops.integrator("LoadControl", 0.25)
-    ops.analysis("Static")
-    name = str(tmp_path / "plastic")
-    ops.recorder("PVD", name)
-    assert ops.analyze(4) == 0
+    name = _one_element_under_imposed_strain(tmp_path / "plastic", etype, 2, (1, -1e-2), 4, 0.25, "Newton")
     eq = ops.eleResponse(1, "equivalentPlasticStrains")
     points = 1 if etype.startswith("SSP") else (8 if brick else 4)
     assert len(eq) == points and min(eq) > 1e-3 and max(eq) - min(eq) < 1e-9
