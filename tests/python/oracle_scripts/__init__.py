@@ -47,4 +47,6 @@ SCRIPTS = (
     "earthquake_2d",
     "example3_cantilever",
     "force_beam_iterations",
+    "solid_elements",
+    "solid_footing",
 )
