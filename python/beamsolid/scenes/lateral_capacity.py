@@ -206,6 +206,9 @@ class CapacityResult:
     deflection: list = field(default_factory=list)
     moment: list = field(default_factory=list)  # M_y (kNm), positive for a head pushed along +x
     soil_reaction: float = 0.0  # sum of the soil's x forces on the pile at the last state (kN, along -x)
+    # Beam + contact: M_y the contacts apply to the head and tip nodes (the adhesion's vertical
+    # forces at radius R), which the beam's end moments balance: a free end's moment is not 0.
+    end_moments: tuple = (0.0, 0.0)
     n_equations: int = 0
     n_elements: int = 0
     n_contacts: int = 0
@@ -426,10 +429,16 @@ class ContactModel(_SolidModel):
         r.deflection = [m.nodeDisp(t, 1) for t in self.pile_nodes]
         r.moment = [f[4] for f in forces] + [-forces[-1][10]]
         total = 0.0
+        ends = {self.pile_nodes[0]: 0.0, self.pile_nodes[-1]: 0.0}
         for _, e in self.contacts:
             f = m.eleResponse(e, "masterforce")
             total += f[0] + f[3]
+            i, j = (int(t) for t in m.eleResponse(e, "segment"))
+            for end in ends:
+                if end in (i, j):  # M_y the contacts apply to an end node (adhesion at radius R)
+                    ends[end] += m.eleResponse(e, "mastermoment")[1 if i == end else 4]
         r.soil_reaction = total
+        r.end_moments = (ends[self.pile_nodes[0]], ends[self.pile_nodes[-1]])
 
 
 class BrickModel(_SolidModel):
