@@ -206,6 +206,8 @@ class CapacityResult:
     deflection: list = field(default_factory=list)
     moment: list = field(default_factory=list)  # M_y (kNm), positive for a head pushed along +x
     soil_reaction: float = 0.0  # sum of the soil's x forces on the pile at the last state (kN, along -x)
+    # Soil bricks at the last state: (x, y, z of the centroid, mean equivalent plastic strain).
+    plastic: list = field(default_factory=list)
     # Beam + contact: M_y the contacts apply to the head and tip nodes (the adhesion's vertical
     # forces at radius R), which the beam's end moments balance: a free end's moment is not 0.
     end_moments: tuple = (0.0, 0.0)
@@ -351,6 +353,15 @@ class _SolidModel:
                     depth = max(depth, -m.nodeCoord(s, 3))
         r.n_open.append(n_open)
         r.gap_depth.append(depth)
+
+    def plastic_state(self):
+        """[(x, y, z, mean equivalent plastic strain, the 8 corners)] of every soil brick."""
+        m, out = self.m, []
+        for e in self.mesh.elements:
+            xyz = [self.mesh.coords[t] for t in m.eleNodes(e)]
+            xi = m.eleResponse(e, "equivalentPlasticStrains")
+            out.append((*(sum(c[i] for c in xyz) / len(xyz) for i in range(3)), sum(xi) / len(xi), xyz))
+        return out
 
     def add_pvd(self, out, name):
         import pathlib
@@ -588,6 +599,7 @@ def _run_solid(cls, kind, problem, numerics, m=None, out=None, on_step=None):
     model.push(r, on_step)
     t3 = time.perf_counter()
     model.finish(r)
+    r.plastic = model.plastic_state()
     model.m.wipe()
     r.timings = dict(build=t1 - t0, geostatic=t2 - t1, push=t3 - t2, total=time.perf_counter() - t0,
                      cpu=time.process_time() - c0)
@@ -721,6 +733,41 @@ def _plots(out, results, problem, closed):
     files.append(out / "profiles.png")
     fig.savefig(files[-1], dpi=120)
     plt.close(fig)
+
+    solid = [k for k in ("rough", "brick_tied") if k in results and results[k].plastic]
+    if solid:
+        from matplotlib.collections import PolyCollection
+
+        fig, axes = plt.subplots(2, len(solid), figsize=(5.4 * len(solid), 7.6), squeeze=False)
+        for col, key in enumerate(solid):
+            cells = results[key].plastic
+            vmax = max(c[3] for c in cells) or 1.0
+            top = max(c[2] for c in cells)
+            # The vertical section through the axis along the push: the bricks astride y = 0 (drawn
+            # over their x-z extent); and the top layer (each brick's top face in plan).
+            section = [c for c in cells if min(p[1] for p in c[4]) < 0.0 < max(p[1] for p in c[4])]
+            polys_s = [[(min(p[0] for p in c[4]), min(p[2] for p in c[4])), (max(p[0] for p in c[4]),
+                        min(p[2] for p in c[4])), (max(p[0] for p in c[4]), max(p[2] for p in c[4])),
+                        (min(p[0] for p in c[4]), max(p[2] for p in c[4]))] for c in section]
+            surface = [c for c in cells if abs(c[2] - top) < 1e-9]
+            polys_t = [[(p[0], p[1]) for p in c[4][4:]] for c in surface]  # the top face: nodes 5-8
+            for ax, polys, pts, ylabel, title in ((axes[0][col], polys_s, section, "z (m)", "section y = 0"),
+                                                  (axes[1][col], polys_t, surface, "y (m)", "top layer, plan")):
+                coll = PolyCollection(polys, array=[c[3] for c in pts], cmap="magma_r", edgecolors="0.7",
+                                      linewidths=0.2)
+                coll.set_clim(0.0, vmax)
+                ax.add_collection(coll)
+                ax.autoscale_view()
+                ax.set_aspect("equal")
+                ax.set_title(f"{MODELS[key]}: {title}", fontsize=8)
+                ax.set_xlabel("x (m)")
+                ax.set_ylabel(ylabel)
+                fig.colorbar(coll, ax=ax, shrink=0.8, label="equivalent plastic strain")
+        fig.suptitle(f"Plastic zone at head displacement {problem.head_disp / D:.2f} D (brick means)", fontsize=10)
+        fig.tight_layout()
+        files.append(out / "plastic_zone.png")
+        fig.savefig(files[-1], dpi=110)
+        plt.close(fig)
     return files
 
 
