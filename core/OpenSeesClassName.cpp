@@ -11,6 +11,8 @@ std::string openSeesClassName(const std::string& elementClassName) {
       {"stdBrick", "Brick"},                    {"bbarBrick", "BbarBrick"},
       {"dispBeamColumn", "DispBeamColumn3d"},   {"forceBeamColumn", "ForceBeamColumn3d"},
       {"nonlinearBeamColumn", "ForceBeamColumn3d"}, {"quad", "FourNodeQuad"},
+      {"bbarQuad", "ConstantPressureVolumeQuad"}, {"SSPquad", "SSPquad"},
+      {"SSPbrick", "SSPbrick"},
   };
   const auto it = table.find(elementClassName);
   return it == table.end() ? elementClassName : it->second;

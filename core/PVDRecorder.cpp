@@ -134,20 +134,27 @@ Eigen::Matrix<double, 6, 1> gaussPointMean(const Response& r) {
   return mean / static_cast<double>(points);
 }
 
-// The mean of the 3-component (11 22 12) blocks of a quad's per-Gauss-point
-// response, as a 6-component xx yy zz xy yz xz tuple.
+// The mean of the per-Gauss-point blocks of a quad's response, as a
+// 6-component xx yy zz xy yz xz tuple: blocks of 3 (11 22 12) for plane
+// strain and stress, of 4 (11 22 33 12: bbarQuad's out-of-plane strain)
+// when the third component is named ..33.
 Eigen::Matrix<double, 6, 1> planeMean(const Response& r) {
   Eigen::Matrix<double, 6, 1> out = Eigen::Matrix<double, 6, 1>::Zero();
   if (!r) return out;
+  const auto& names = r.componentNames;
+  const bool withOutOfPlane =
+      names.size() >= 3 && names[2].size() >= 2 && names[2].compare(names[2].size() - 2, 2, "33") == 0;
+  const Eigen::Index block = withOutOfPlane ? 4 : 3;
   const Vector v = r.value();
-  const Eigen::Index points = v.size() / 3;
-  if (points == 0 || v.size() % 3 != 0) return out;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (Eigen::Index g = 0; g < points; ++g) mean += v.segment<3>(3 * g);
+  const Eigen::Index points = v.size() / block;
+  if (points == 0 || v.size() % block != 0) return out;
+  Vector mean = Vector::Zero(block);
+  for (Eigen::Index g = 0; g < points; ++g) mean += v.segment(block * g, block);
   mean /= static_cast<double>(points);
   out[0] = mean[0];
   out[1] = mean[1];
-  out[3] = mean[2];
+  if (withOutOfPlane) out[2] = mean[2];
+  out[3] = mean[block - 1];
   return out;
 }
 
@@ -207,7 +214,11 @@ PVDRecorder::Spec withContext(PVDRecorder::Spec s) {
 bool PVDRecorder::cellKindOf(const std::string& className, CellKind& kind) {
   static const std::map<std::string, CellKind> kinds = {
       {"stdBrick", CellKind::Solid},
+      {"bbarBrick", CellKind::Solid},
+      {"SSPbrick", CellKind::Solid},
       {"quad", CellKind::Quad},
+      {"bbarQuad", CellKind::Quad},
+      {"SSPquad", CellKind::Quad},
       {"elasticBeamColumn", CellKind::Beam},
       {"dispBeamColumn", CellKind::Beam},
       {"forceBeamColumn", CellKind::Beam},
@@ -374,7 +385,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
     switch (kind) {
       case CellKind::Solid:
         if (nodes.size() != 8) continue;
-        // stdBrick's order (bottom face counterclockwise seen from above,
+        // The bricks' order (bottom face counterclockwise seen from above,
         // then the top face, node 5 above node 1) is VTK_HEXAHEDRON's.
         cell.vtkType = kVtkHexahedron;
         cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
@@ -383,7 +394,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
         break;
       case CellKind::Quad:
         if (nodes.size() != 4) continue;
-        // quad's nodes run counterclockwise, as VTK_QUAD's.
+        // The quads' nodes run counterclockwise, as VTK_QUAD's.
         cell.vtkType = kVtkQuad;
         cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
                           element->setResponse({"plasticStrains"}), element->setResponse({"equivalentPlasticStrains"})};
@@ -524,7 +535,8 @@ void PVDRecorder::writeGrid(Domain& domain, double time, const std::string& path
   if (has(CellKind::Solid) || has(CellKind::Quad)) {
     // Plain mean over the Gauss points, in OpenSees' component order
     // xx yy zz xy yz xz (ParaView's order for a symmetric tensor); a quad's
-    // 11 22 12 fill xx yy xy (its out-of-plane components are left 0).
+    // 11 22 12 fill xx yy xy (the out-of-plane components are left 0, but
+    // for bbarQuad's 33).
     const Eigen::Matrix<double, 6, 1> zero6 = Eigen::Matrix<double, 6, 1>::Zero();
     for (int which = 0; which < 2; ++which) {
       openArray(out, "Float64", which == 0 ? "stress" : "strain", 6);

@@ -21,7 +21,8 @@ class Node;
 // (also 'pvd', 'vtk', 'VTK'): the model for ParaView. Every record writes one
 // VTK XML UnstructuredGrid file (ASCII) name/name_NNNNNN.vtu, and name.pvd
 // lists them with their times; the .pvd is complete on disk after every
-// record. Soil bricks are hexahedra, beams and trusses lines, beam-solid
+// record. Soil bricks (stdBrick, bbarBrick, SSPbrick) are hexahedra, quads
+// (quad, bbarQuad, SSPquad) quadrilaterals, beams and trusses lines, beam-solid
 // contacts vertices at their soil node; elements of other types (zeroLength
 // included) are left out, and so are nodes that no written cell uses.
 // docs/paraview.md lists the fields.

@@ -107,7 +107,11 @@ void ContactMaterial3D::setIterate(double gap, const Vector2& slip, double norma
   }
   setTrialState(gap, slip, normalForce, metric);
   held_ = false;
-  if (sliding_ && previousSliding_) {
+  // With no strength (mu t_n + c = 0: a smooth interface, or mu > 0 at t_n = 0) there is
+  // no stick band to overshoot and the return map's T = 0 with a zero tangent is exact; a
+  // previous iterate that slid with no traction has no direction to compare with. Holding
+  // such a node sticking made every other iterate stick, and Newton cycled.
+  if (sliding_ && previousSliding_ && slipResistance_ > 0.0 && previousDirection_.squaredNorm() > 0.0) {
     // Plastic multiplier of the trial state along the previous traction
     // direction t (unit in m^-1): t . G s_e - (mu t_n + c) (C14 projected).
     const Vector2 trialSlip = committedElasticSlip_ + slip;

@@ -36,6 +36,10 @@ class InitialStateAnalysisWrapper : public NDMaterial {
   bool setParameter(const std::vector<std::string>& args, double value) override {
     return inner_->setParameter(args, value);
   }
+  // The inner material's responses (its stress and strain are the wrapper's), so that a
+  // wrapped plastic soil still reports 'plasticStrain' and 'equivalentPlasticStrain' to its
+  // elements and the PVD recorder.
+  Response setResponse(const std::vector<std::string>& args) override { return inner_->setResponse(args); }
   void print(std::ostream& os) const override;
 
   const Vector& initialStrain() const { return initialStrain_; }

@@ -2,12 +2,12 @@
 
 Soil nodes on the pile surface lie exactly on the circle of the pile radius,
 so the beam-solid contact measures gaps from the true surface; beam nodes lie
-on the axis. Every function creates nodes and stdBrick elements through the
-given command module (``beamsolid.opensees`` or a ``beamsolid.Model``) and
-returns the tags a script needs (docs/meshing.md).
+on the axis. Every function creates nodes and 8-node bricks (stdBrick, or bbarBrick /
+SSPbrick by `element`) through the given command module (``beamsolid.opensees`` or a
+``beamsolid.Model``) and returns the tags a script needs (docs/meshing.md).
 
 A mesh is a plan -- quads in the x-y plane (:class:`Plan`) -- extruded over a list of
-z levels, top to bottom, into 8-node stdBrick elements: node tags run level by level
+z levels, top to bottom, into 8-node bricks: node tags run level by level
 (top level first) and within a level in plan order; element tags run layer by layer
 (top layer first) and within a layer in plan order. Each brick lists its bottom face
 counterclockwise seen from above, then its top face (positive Jacobians).
@@ -324,7 +324,18 @@ def _first_tags(ops, first_node, first_element):
     return first_node, first_element
 
 
-def _extrude(ops, plan, levels, fill_from, material_tag, first_node, first_element, body_force, n_theta):
+SOLID_BRICKS = ("stdBrick", "bbarBrick", "SSPbrick")
+
+
+def _check_element(where, element):
+    if element not in SOLID_BRICKS:
+        raise ValueError(f"{where}: element must be one of {', '.join(SOLID_BRICKS)} (8-node bricks with the "
+                         f"arguments nodes, matTag, b1, b2, b3), got {element!r}")
+    return element
+
+
+def _extrude(ops, plan, levels, fill_from, material_tag, first_node, first_element, body_force, n_theta,
+             element="stdBrick"):
     first_node, first_element = _first_tags(ops, first_node, first_element)
     mesh = SoilMesh(plan=plan, levels=list(levels), piles=list(plan.piles), n_theta=n_theta)
     core_only = plan.core_points()
@@ -346,7 +357,7 @@ def _extrude(ops, plan, levels, fill_from, material_tag, first_node, first_eleme
             # Bottom face (level k + 1, lower z) counterclockwise seen from above, then the top face.
             bottom = [mesh.node_at[(p, k + 1)] for p in quad]
             top = [mesh.node_at[(p, k)] for p in quad]
-            ops.element("stdBrick", ele, *bottom, *top, material_tag, *body_force)
+            ops.element(element, ele, *bottom, *top, material_tag, *body_force)
             mesh.elements.append(ele)
             ele += 1
     last = len(levels) - 1
@@ -392,8 +403,8 @@ def _check_radial(where, n_radial, radial_ratio):
 def ogrid(ops, *, pile_radius, outer_size, outer="circle", n_theta=16, n_radial=6, radial_ratio=1.3,
           levels=None, z_top=None, z_bottom=None, n_z=None, z_ratio=1.0, centre=(0.0, 0.0), material_tag=1,
           first_node=None, first_element=None, body_force=(0.0, 0.0, 0.0), core_below=None, core_fraction=0.5,
-          n_core=None):
-    """O-grid of stdBrick soil around a vertical pile hole of radius `pile_radius`.
+          n_core=None, element="stdBrick"):
+    """O-grid of brick soil around a vertical pile hole of radius `pile_radius`.
 
     outer='circle': an annulus out to radius `outer_size` (radial spacing graded by
     `radial_ratio` outwards, ring j at graded radii); outer='square': out to a square of
@@ -405,10 +416,12 @@ def ogrid(ops, *, pile_radius, outer_size, outer="circle", n_theta=16, n_radial=
     core_fraction * pile_radius and n_core rings), so a pile can end above the base; at or
     above the top level, the block has no hole. The model must be in an ndf-3 state.
     Node and element tags start at first_node / first_element (default: one above the
-    largest in use). Returns a SoilMesh; groups 'outer' (+ 'xmin' ... for a square),
-    'top', 'base'.
+    largest in use). `element`: 'stdBrick', or 'bbarBrick' / 'SSPbrick' for soil that
+    flows at constant volume (J2, undrained clay: docs/solid_elements.md). Returns a
+    SoilMesh; groups 'outer' (+ 'xmin' ... for a square), 'top', 'base'.
     """
     where = "ogrid"
+    _check_element(where, element)
     if outer not in ("circle", "square"):
         raise ValueError(f"{where}: outer must be 'circle' or 'square', got {outer!r}")
     square = outer == "square" or core_below is not None
@@ -431,7 +444,8 @@ def ogrid(ops, *, pile_radius, outer_size, outer="circle", n_theta=16, n_radial=
         n_core = _check_core(where, n_theta, core_fraction, n_core)
         _add_core(plan, 0, plan.circles[0], n_theta, pile_radius, core_fraction, n_core)
     _check_plan(plan, where, "outer_size is too close to pile_radius for this n_theta / radial_ratio")
-    return _extrude(ops, plan, levels, fill_from, material_tag, first_node, first_element, body_force, n_theta)
+    return _extrude(ops, plan, levels, fill_from, material_tag, first_node, first_element, body_force, n_theta,
+                    element)
 
 
 def _four(where, name, value, kind):
@@ -444,7 +458,7 @@ def _four(where, name, value, kind):
 def pile_group(ops, *, piles, pile_radius, spacing, n_theta=16, n_radial=4, radial_ratio=1.3, padding=0.0,
                n_padding=4, padding_ratio=1.3, levels=None, z_top=None, z_bottom=None, n_z=None, z_ratio=1.0,
                material_tag=1, first_node=None, first_element=None, body_force=(0.0, 0.0, 0.0), core_below=None,
-               core_fraction=0.5, n_core=None):
+               core_fraction=0.5, n_core=None, element="stdBrick"):
     """A rectangular soil block around piles on a regular grid of square tiles.
 
     Each pile (x, y) sits in the centre of a square O-grid tile of side `spacing`
@@ -453,10 +467,11 @@ def pile_group(ops, *, piles, pile_radius, spacing, n_theta=16, n_radial=4, radi
     their edge nodes; grid cells between piles without a pile are filled with a plain
     block; `padding` (one value or xmin, xmax, ymin, ymax) adds soil beyond the tiles in
     `n_padding` divisions growing outwards by padding_ratio. Levels and core_below as in
-    ogrid. Returns a SoilMesh: surfaces[p] are pile p's surface nodes by level then angle;
-    groups 'xmin', 'xmax', 'ymin', 'ymax', 'outer', 'top', 'base'.
+    ogrid. `element` as in ogrid. Returns a SoilMesh: surfaces[p] are pile p's surface nodes
+    by level then angle; groups 'xmin', 'xmax', 'ymin', 'ymax', 'outer', 'top', 'base'.
     """
     where = "pile_group"
+    _check_element(where, element)
     piles = [tuple(float(c) for c in p) for p in piles]
     if not piles or any(len(p) != 2 for p in piles):
         raise ValueError(f"{where}: piles must be a non-empty list of (x, y), got {piles}")
@@ -484,12 +499,13 @@ def pile_group(ops, *, piles, pile_radius, spacing, n_theta=16, n_radial=4, radi
         for p in range(len(piles)):
             _add_core(plan, p, plan.circles[p], n_theta, pile_radius, core_fraction, n_core)
     _check_plan(plan, where, "spacing is too close to the pile diameter for this n_theta / radial_ratio")
-    return _extrude(ops, plan, levels, fill_from, material_tag, first_node, first_element, body_force, n_theta)
+    return _extrude(ops, plan, levels, fill_from, material_tag, first_node, first_element, body_force, n_theta,
+                    element)
 
 
 def solid_cylinder(ops, *, radius, levels=None, z_top=None, z_bottom=None, n_z=None, z_ratio=1.0, n_theta=16,
                    centre=(0.0, 0.0), core_fraction=0.5, n_core=None, material_tag=1, first_node=None,
-                   first_element=None, body_force=(0.0, 0.0, 0.0)):
+                   first_element=None, body_force=(0.0, 0.0, 0.0), element="stdBrick"):
     """A solid circular pile of bricks (butterfly cross-section) with its own nodes.
 
     The surface nodes have the same coordinates as those of an ogrid / pile_group hole of
@@ -499,6 +515,7 @@ def solid_cylinder(ops, *, radius, levels=None, z_top=None, z_bottom=None, n_z=N
     axis is empty), groups 'outer' (= surface), 'top', 'base' (end faces).
     """
     where = "solid_cylinder"
+    _check_element(where, element)
     _check_theta(where, n_theta, True)
     if not radius > 0:
         raise ValueError(f"{where}: radius must be positive, got {radius}")
@@ -516,7 +533,8 @@ def solid_cylinder(ops, *, radius, levels=None, z_top=None, z_bottom=None, n_z=N
     _add_core(plan, 0, circle, n_theta, radius, core_fraction, n_core)
     plan.core_quads.clear()  # everything exists at every level
     _check_plan(plan, where, "core_fraction / n_core give a degenerate core")
-    mesh = _extrude(ops, plan, levels, len(levels), material_tag, first_node, first_element, body_force, n_theta)
+    mesh = _extrude(ops, plan, levels, len(levels), material_tag, first_node, first_element, body_force, n_theta,
+                    element)
     mesh.surfaces = [[[mesh.node_at[(c, k)] for c in circle] for k in range(len(levels))]]
     mesh.tip_level = len(levels) - 1
     m = n_theta // 4

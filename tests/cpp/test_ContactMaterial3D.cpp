@@ -366,6 +366,34 @@ TEST(ContactMaterial3D, IterateHoldsAReversingNodeStickingInsteadOfCycling) {
   }
 }
 
+// A smooth interface (mu = 0, c = 0) under compression: no strength, so a
+// sliding node carries no traction and has no direction.
+// The guard must leave it to the return map; it used to hold every other
+// iterate sticking (direction zero, 0 <= 0), and a confined smooth pile's
+// Newton cycled between two states (the lateral capacity slice).
+TEST(ContactMaterial3D, IterateWithNoStrengthNeverHoldsANode) {
+  const Matrix2 m = testMetric();
+  const double stiffG = 1e6, k = 1e4;
+  const Vector2 e = Vector2(1.0, -0.5) / normIn(m, Vector2(1.0, -0.5));
+  const Vector2 f = 5.0 * m * e;
+  for (const double N : {10.0, 1e-3}) {
+    SCOPED_TRACE(N);
+    ContactMaterial3D mat(1, 0.0, stiffG, 0.0, 0.0);
+    for (double sign : {1.0, -1.0, 1.0, -2.0}) {
+      mat.setIterate(0.0, sign * 1e-3 * e, N, m);
+      EXPECT_FALSE(mat.heldSticking());
+      EXPECT_TRUE(mat.sliding());
+      EXPECT_EQ(mat.traction().norm(), 0.0);
+      EXPECT_EQ(mat.tangentSlip().norm(), 0.0);
+    }
+    // Newton on a spring: converged after the first correction (the interface adds nothing).
+    ContactMaterial3D fresh(1, 0.0, stiffG, 0.0, 0.0);
+    const std::vector<double> norms = springNewton(fresh, true, k, f, N, m, -1e-3 * e, 3);
+    EXPECT_LE(norms[0], 1e-12 * f.norm());
+    EXPECT_LE(norms[2], 1e-12 * f.norm());
+  }
+}
+
 TEST(ContactMaterial3D, IterateIsRepeatableAndForgetsAtCommitAndRevert) {
   const Matrix2 m = testMetric();
   const double N = 10.0, capacity = mu * N + c;

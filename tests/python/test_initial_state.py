@@ -128,3 +128,38 @@ def test_bad_wrapper(args, match):
     m.nDMaterial("ContactMaterial3D", 5, 0.5, 1000.0, 0.0, 0.0)
     with pytest.raises(OpenSeesError, match=match):
         m.nDMaterial("InitialStateAnalysisWrapper", *args)
+
+
+def test_wrapped_plastic_soil_reports_its_plastic_state():
+    # A wrapped J2 brick sheared past yield reports the inner material's plastic strains (the
+    # PVD recorder's plasticStrain arrays read them), equal to the same brick unwrapped.
+    values = []
+    for wrapped in (False, True):
+        m = Model()
+        m.model("basic", "-ndm", 3, "-ndf", 3)
+        pts = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+        for i, p in enumerate(pts):
+            m.node(i + 1, *p)
+        for i in range(1, 9):
+            m.fix(i, 0 if i > 4 else 1, 1, 1)
+        m.nDMaterial("J2Plasticity", 1, 1000.0, 500.0, 1.0, 1.0, 0.0, 0.0)
+        if wrapped:
+            m.nDMaterial("InitialStateAnalysisWrapper", 2, 1, 3)
+        m.element("bbarBrick", 1, *range(1, 9), 2 if wrapped else 1)
+        m.timeSeries("Linear", 1)
+        m.pattern("Plain", 1, 1)
+        for i in range(5, 9):
+            m.sp(i, 1, 0.01)  # shear strain 0.01, yield at 1 / (sqrt(3) 500) = 0.00115
+        m.constraints("Transformation")
+        m.numberer("Plain")
+        m.system("UmfPack")
+        m.test("NormDispIncr", 1e-12, 20)
+        m.algorithm("Newton")
+        m.integrator("LoadControl", 0.25)
+        m.analysis("Static")
+        assert m.analyze(4) == 0
+        values.append((m.eleResponse(1, "equivalentPlasticStrains"), m.eleResponse(1, "plasticStrains")))
+    (xi, ep), (xi_w, ep_w) = values
+    assert min(xi) > 0.0
+    assert xi_w == pytest.approx(xi, rel=1e-12)
+    assert ep_w == pytest.approx(ep, rel=1e-12, abs=1e-15)

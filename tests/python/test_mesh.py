@@ -309,6 +309,8 @@ def test_pile_in_soil_geostatic_normal_sum(model):
     ("pile_group", dict(padding=-1.0), "padding"),
     ("pile_group", dict(padding=(1.0, 2.0)), "padding"),
     ("pile_group", dict(n_padding=0, padding=1.0), "n_padding"),
+    ("ogrid", dict(element="quad"), "element"),
+    ("pile_group", dict(element="brick"), "element"),
 ])
 def test_bad_arguments_name_the_argument(soil, call, kwargs, word):
     base = dict(pile_radius=0.5, levels=[0.0, -1.0, -2.0])
@@ -322,6 +324,19 @@ def test_bad_arguments_name_the_argument(soil, call, kwargs, word):
     with pytest.raises(ValueError, match=word):
         getattr(mesh, call)(soil, **base)
     assert soil.getNodeTags() == []  # nothing was built
+
+
+@pytest.mark.parametrize("element", ["bbarBrick", "SSPbrick"])
+def test_other_bricks_build_the_same_mesh(soil, element):
+    kw = dict(pile_radius=0.5, outer_size=2.0, n_theta=8, n_radial=2, levels=[0.0, -1.0, -2.0], core_below=-1.0)
+    plain = mesh.ogrid(soil, **kw)
+    other = mesh.ogrid(soil, **kw, element=element)
+    assert len(other.elements) == len(plain.elements)
+    for a, b in zip(plain.elements, other.elements):
+        assert soil.eleType(a) != soil.eleType(b)
+        assert [soil.nodeCoord(t) for t in soil.eleNodes(a)] == [soil.nodeCoord(t) for t in soil.eleNodes(b)]
+    cyl = mesh.solid_cylinder(soil, radius=0.5, levels=[0.0, -1.0], n_theta=8, element=element)
+    assert {soil.eleType(e) for e in cyl.elements} == {soil.eleType(other.elements[0])}
 
 
 def test_pile_in_soil_refuses_a_tip_at_the_top(soil):

@@ -15,6 +15,8 @@ SCENES = {
     "donut_pullout": ("beamsolid.scenes.donut_cli", "scene", "the donut pullout test (paper's Table 1)"),
     "bridge_bent": ("beamsolid.scenes.bridge_bent", "scene", "piles joined by a cap beam, pushed transversely"),
     "seismic_pile": ("beamsolid.scenes.seismic_pile", "scene", "a pile in a soil layer shaken at the bedrock"),
+    "lateral_capacity": ("beamsolid.scenes.lateral_capacity", "scene",
+                         "a free-head pile in von Mises clay pushed to failure, four ways"),
 }
 
 

@@ -49,4 +49,6 @@ SCRIPTS = (
     "force_beam_iterations",
     "response_spectrum",
     "script_queries",
+    "solid_elements",
+    "solid_footing",
 )

@@ -39,6 +39,9 @@ TOLERANCES = (
     ("penalty.pull*.master*", 1e-7),
     # time_series: series values are closed forms evaluated at the same times.
     ("ts.*", 1e-12),
+    # solid_footing: 25 plastic steps of J2 soil; OpenSeesPy's J2 return stops ~5e-9 short of the exact
+    # stress (its local tolerance), which the path carries to ~1e-7 in the displacements.
+    ("footing.*", 2e-7),
     ("*", 1e-8),
 )
 
@@ -94,6 +97,23 @@ KNOWN_DIFFERENCES = {
         "increment); BeamSolid's dynamic tangent holds the bar's consistent damping tangent A eta / L0 e e^T "
         "(3 and 6 Newton iterations a step at alpha 1 and 0.5), OpenSeesPy 3.7.1 converges more slowly (7 and "
         "14)",
+    ("solid_elements", "bbarQuad.*.ele*.st*"):
+        "bbarQuad stresses/strains: OpenSeesPy 3.7.1 writes the 33 component twice per Gauss point (11 22 33 33) "
+        "where its material holds 11 22 33 12; BeamSolid writes 11 22 33 12 (the first three agree, and so do "
+        "the 'material' k 'stress'/'strain' responses)",
+    ("solid_elements", "SSP*.distorted.[de]*"):
+        "SSPquad/SSPbrick on non-rectangular elements: the hourglass stiffness differs (docs/solid_elements.md: "
+        "ours is the published assumed strain (quad) and Puso's enhanced strain in the natural basis (brick), "
+        "OpenSees' differs and is not invariant under rotation); 0.1-0.3 % in displacements, 0.3-1.3 % in "
+        "element forces and stresses, 1.8 % in the SSPquad frequencies here. Regular meshes and the patch "
+        "test on these meshes agree to 1e-14",
+    ("solid_footing", "footing.bbarQuad.edge.stresses"):
+        "bbarQuad stresses: OpenSeesPy 3.7.1 writes 11 22 33 33 per Gauss point (see solid_elements)",
+    ("solid_elements", "SSPquad.*.distorted.sw.disp"):
+        "see SSP*.distorted.[de]*: the self-weight stage on the distorted mesh",
+    ("solid_elements", "SSPbrick.distorted.reactionSum"):
+        "SSPbrick body force on a distorted element: OpenSees' nodal shares (the weights of its lumped mass) "
+        "do not sum to the element volume (6e-8 of the load here); BeamSolid's integral(N_a dV) do",
     ("example3_cantilever", "fiber02.push.section5"):
         "forceBeamColumn's state at the last step: OpenSees' free-end section forces are off b q by up to 1e-3 "
         "(5e-7 of the axial force), BeamSolid's equal b q to round-off. Not traced to the update; the likely cause "

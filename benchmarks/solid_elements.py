@@ -1,0 +1,124 @@
+"""Locking and convergence of the solid elements: quad, bbarQuad, SSPquad,
+stdBrick, bbarBrick, SSPbrick (bricks: one layer, plane strain).
+
+- Thick-walled cylinder (a = 1, b = 2) under internal pressure, nu = 0.4999,
+  quarter model n x 2n: error of the inner radial displacement against Lame.
+- Cantilever L/h = 10 in pure bending against beam theory (exact here),
+  nu = 0.3 and 0.4999, meshes 4k x k, rectangular and skewed (interior node
+  columns leaning by +-1/4 element width over the depth).
+- With J2 (when nDMaterial J2Plasticity exists): the rigid smooth strip
+  footing on weightless von Mises soil against Prandtl, (2 + pi) s_u.
+
+Writes benchmarks/results/solid_elements.md (and .json).
+
+    PYTHONPATH=python .venv/bin/python benchmarks/solid_elements.py [--quick]
+"""
+import argparse
+import json
+import math
+import pathlib
+import sys
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "python"))
+sys.path.insert(0, str(ROOT / "tests" / "python"))
+OUT = ROOT / "benchmarks" / "results"
+
+import beamsolid  # noqa: E402
+import solid_models as sm  # noqa: E402
+
+ELEMENTS = ("quad", "bbarQuad", "SSPquad", "stdBrick", "bbarBrick", "SSPbrick")
+
+
+def _rates(errors, sizes):
+    out = []
+    for k in range(len(errors) - 1):
+        a, b = abs(errors[k]), abs(errors[k + 1])
+        out.append(math.log(a / b) / math.log(sizes[k] / sizes[k + 1]) if a > 1e-7 and b > 1e-7 else float("nan"))
+    return out
+
+
+def _fmt(e):
+    return f"{100 * e:+.3f} %" if abs(e) >= 1e-7 else f"{e:.1e}"
+
+
+def table(title, header, rows):
+    lines = [f"### {title}", "", "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(r) + " |" for r in rows]
+    return "\n".join(lines) + "\n"
+
+
+def cylinder(m, levels):
+    rows, data = [], {}
+    for etype in ELEMENTS:
+        errs = [sm.cylinder_inner_error(m, etype, n, 0.4999) for n in levels]
+        data[etype] = errs
+        rates = _rates(errs, [1.0 / n for n in levels])
+        rows.append([etype] + [_fmt(e) for e in errs] + [", ".join(f"{r:.2f}" for r in rates)])
+    return table("Thick-walled cylinder, nu = 0.4999: error of u_r(a) against Lame",
+                 ["element"] + [f"n = {n}" for n in levels] + ["rates"], rows), data
+
+
+def bending(m, levels, nu, skew):
+    rows, data = [], {}
+    for etype in ELEMENTS:
+        ks = levels if etype not in sm.BRICKS else levels[:-1]
+        errs = [sm.bending_tip_error(m, etype, 4 * k, k, nu, skew=skew) for k in ks]
+        data[etype] = errs
+        rates = _rates(errs, [1.0 / k for k in ks])
+        cells = [_fmt(e) for e in errs] + ["-"] * (len(levels) - len(ks))
+        rows.append([etype] + cells + [", ".join("exact" if math.isnan(r) else f"{r:.2f}" for r in rates)])
+    kind = "skewed" if skew else "rectangular"
+    return table(f"Cantilever in pure bending, nu = {nu}, {kind} mesh: error of the tip deflection",
+                 ["element"] + [f"{4 * k} x {k}" for k in levels] + ["rates"], rows), data
+
+
+def footing(m, meshes, etypes):
+    rows, data = [], {}
+    target = 2.0 + math.pi
+    for etype in etypes:
+        for nx, ny in meshes:
+            t = time.time()
+            q = sm.strip_footing(m, etype, nx, ny, algorithm=("NewtonLineSearch",))
+            seconds = time.time() - t
+            data[f"{etype} {nx}x{ny}"] = q
+            last = q[-1] if q else float("nan")
+            rows.append([etype, f"{nx} x {ny}", f"{last:.4f}", _fmt(last / target - 1.0), f"{seconds:.1f}"])
+    return table("Strip footing on weightless von Mises soil (E = 1000 s_u, nu = 0.49, settlement 0.05 B/2 in 25 "
+                 "nominal steps, NewtonLineSearch, steps cut where it fails): q / s_u at the end, Prandtl 2 + pi = "
+                 "5.1416", ["element", "mesh", "q / s_u", "error", "seconds (machine shared, noisy)"], rows), data
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--quick", action="store_true", help="coarser meshes")
+    args = parser.parse_args()
+    m = beamsolid.Model()
+    cyl_levels = [2, 4, 8] if args.quick else [2, 4, 8, 16, 32]
+    bend_levels = [2, 4, 8] if args.quick else [2, 4, 8, 16, 32]
+    parts, data = [], {}
+    text, data["cylinder"] = cylinder(m, cyl_levels)
+    parts.append(text)
+    for nu in (0.3, 0.4999):
+        for skew in (0.0, 0.25):
+            text, data[f"bending nu={nu} skew={skew}"] = bending(m, bend_levels, nu, skew)
+            parts.append(text)
+    if "J2Plasticity" in beamsolid.registered_types().get("nDMaterial", []):
+        meshes = [(12, 8), (24, 16)] if args.quick else [(12, 8), (24, 16), (48, 32)]
+        text, data["footing"] = footing(m, meshes, ("quad", "bbarQuad", "SSPquad"))
+        parts.append(text)
+    else:
+        parts.append("### Strip footing\n\nnDMaterial J2Plasticity is not registered in this build: not run.\n")
+    head = ("# Solid elements: locking and convergence\n\n"
+            "Generated by `PYTHONPATH=python .venv/bin/python benchmarks/solid_elements.py"
+            + (" --quick" if args.quick else "") + "` (tests/python/solid_models.py builds the models; "
+            "errors are (FE - exact) / exact; rates log(e_k / e_k+1) / log 2 per halving of the element size).\n\n")
+    OUT.mkdir(exist_ok=True)
+    (OUT / "solid_elements.md").write_text(head + "\n".join(parts))
+    (OUT / "solid_elements.json").write_text(json.dumps(data, indent=1))
+    print(head + "\n".join(parts))
+
+
+if __name__ == "__main__":
+    main()
