@@ -57,21 +57,33 @@ def main():
     t0 = time.process_time()
     closed = broms(problem)
     broms_cpu = time.process_time() - t0
-    ref = results[(REFERENCE, levels[-1])]
-    H_ref, M_ref = ref.force_at(0.1 * D), ref.max_moment
+    # The reference for H(0.1 D) and the curve: the finest run of the reference model that got
+    # past 0.1 D; for M_max at the end: its finest run that reached the end (a push can stall
+    # on Newton iterations that cycle, see docs/lateral_capacity.md).
+    past = [lv for lv in levels if results[(REFERENCE, lv)].head_disp[-1] >= 0.1 * D]
+    ended = [lv for lv in levels if results[(REFERENCE, lv)].converged]
+    ref_level = past[-1] if past else levels[-1]
+    ref_level_M = ended[-1] if ended else levels[-1]
+    ref, ref_M = results[(REFERENCE, ref_level)], results[(REFERENCE, ref_level_M)]
+    H_ref, M_ref = ref.force_at(0.1 * D), ref_M.max_moment
     rows = []
     for (key, level), r in results.items():
         H = r.force_at(0.1 * D)
-        rows.append(dict(model=key, level=level, converged=r.converged, equations=r.n_equations,
+        rows.append(dict(model=key, level=level, converged=r.converged, reached=r.head_disp[-1] / D,
+                         fallback_at=r.fallback_at, equations=r.n_equations,
                          elements=r.n_elements, steps=len(r.iterations) - 1, iterations=sum(r.iterations),
                          cuts=r.cuts, cpu=r.cpu, wall=r.wall, H_01D=H, H_end=r.capacity, M_max=r.max_moment,
                          gap_depth=r.gap_depth[-1] if r.gap_depth else 0.0,
-                         err_H=abs(H - H_ref) / H_ref, err_M=abs(r.max_moment - M_ref) / abs(M_ref),
-                         err_curve=curve_error(r, ref), reference=(key, level) == (REFERENCE, levels[-1])))
+                         err_H=abs(H - H_ref) / H_ref if H == H else None,
+                         err_M=abs(r.max_moment - M_ref) / abs(M_ref) if r.converged else None,
+                         err_curve=curve_error(r, ref) if r.converged or r is ref else None,
+                         reference=(key, level) == (REFERENCE, ref_level),
+                         reference_M=(key, level) == (REFERENCE, ref_level_M)))
     rows.append(dict(model="broms", level="-", converged=True, equations=0, elements=0, steps=0, iterations=0,
                      cuts=0, cpu=broms_cpu, wall=broms_cpu, H_01D=closed.H, H_end=closed.H, M_max=closed.M_short,
                      gap_depth=0.0, err_H=abs(closed.H - H_ref) / H_ref,
-                     err_M=abs(closed.M_short - M_ref) / abs(M_ref), err_curve=None, reference=False))
+                     err_M=abs(closed.M_short - M_ref) / abs(M_ref), err_curve=None, reference=False,
+                     reference_M=False, reached=None, fallback_at=None))
 
     names = dict(MODELS, broms="Broms (1964), closed form")
     level_text = ", ".join(f"{k} {v[0]} x {v[1]} x {v[2]}+{v[3]} (p-y: {PY_ELEMENTS[k]} beams)"
@@ -82,22 +94,29 @@ def main():
              f"scenes/lateral_capacity.py: D = {D:g} m, L = {problem.length:g} m elastic pile, free head pushed to "
              f"{problem.head_disp / D:.2f} D in 16 steps, J2 clay s_u = {problem.su:g} kPa, E = {problem.soil_E:g} kPa, "
              f"gamma = {problem.gamma:g}. Soil O-grid (n_theta x n_radial x layers along + below the pile): "
-             f"{level_text}. Reference: {names[REFERENCE]} at {levels[-1]} (H(0.1 D) = {H_ref:.1f} kN, M_max = "
-             f"{M_ref:.1f} kNm). Errors: H(0.1 D), the head load at a head displacement of 0.1 D; M_max at the "
+             f"{level_text}. Reference: {names[REFERENCE]} at {ref_level} for H(0.1 D) = {H_ref:.1f} kN and the curve, "
+             f"at {ref_level_M} for M_max = {M_ref:.1f} kNm (its finest runs past 0.1 D and to the end). A push "
+             "that stops on the line search goes on with plain Newton from its last state ('fallback at'); "
+             "'reached': the head displacement of its last converged state. Errors: H(0.1 D), the head load at a head displacement of 0.1 D; M_max at the "
              "end; the curve, the largest difference of H over the push over the reference's largest H. Cost: CPU "
              "seconds of the run (build, gravity stage, push; all threads), on a shared two-core machine; wall "
              "seconds for reference only (other jobs were running).", "",
              f"![error against CPU time](lateral_capacity_accuracy{'_quick' if args.quick else ''}.png)", "",
-             "| model | level | equations | steps | Newton iterations | step cuts | CPU (s) | wall (s) | H(0.1 D) (kN) | "
-             "error | H(end) (kN) | M_max (kNm) | error | curve error | gap depth (m) |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| model | level | equations | reached (D) | fallback at | steps | Newton iterations | step cuts | CPU (s) | "
+             "wall (s) | H(0.1 D) (kN) | error | H(end) (kN) | M_max (kNm) | error | curve error | gap depth (m) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+
+    def pct(x, is_ref):
+        return "ref" if is_ref else ("-" if x is None else f"{x:.1%}")
+
     for r in rows:
-        ref_mark = r["reference"]
-        curve = "-" if r["err_curve"] is None else ("ref" if ref_mark else f"{r['err_curve']:.1%}")
-        lines.append(f"| {names[r['model']]} | {r['level']} | {r['equations']} | {r['steps']} | {r['iterations']} | "
-                     f"{r['cuts']} | {r['cpu']:.2f} | {r['wall']:.1f} | {r['H_01D']:.1f} | "
-                     f"{'ref' if ref_mark else format(r['err_H'], '.1%')} | {r['H_end']:.1f} | {r['M_max']:.1f} | "
-                     f"{'ref' if ref_mark else format(r['err_M'], '.1%')} | {curve} | {r['gap_depth']:.2f} |")
+        reached = "-" if r["reached"] is None else f"{r['reached']:.3f}"
+        fallback = "-" if r["fallback_at"] is None else f"{r['fallback_at'] * problem.head_disp / D:.3f} D"
+        lines.append(f"| {names[r['model']]} | {r['level']} | {r['equations']} | {reached} | {fallback} | {r['steps']} | "
+                     f"{r['iterations']} | {r['cuts']} | {r['cpu']:.2f} | {r['wall']:.1f} | {r['H_01D']:.1f} | "
+                     f"{pct(r['err_H'], r['reference'])} | {r['H_end']:.1f} | {r['M_max']:.1f} | "
+                     f"{pct(r['err_M'], r['reference_M'])} | {pct(r['err_curve'], r['reference'])} | "
+                     f"{r['gap_depth']:.2f} |")
     lines.append("")
     lines += machine.blas_report()
     suffix = "_quick" if args.quick else ""
@@ -123,7 +142,8 @@ def chart(rows, suffix, names):
     for ax, err, label in ((axes[0], "err_H", "error in the capacity H(0.1 D)"),
                            (axes[1], "err_M", "error in the largest moment")):
         for i, key in enumerate(keys):
-            pts = [r for r in rows if r["model"] == key and not r["reference"]]
+            pts = [r for r in rows if r["model"] == key and r[err] is not None
+                   and not r["reference" if err == "err_H" else "reference_M"]]
             if not pts:
                 continue
             # Broms costs nothing measurable: drawn at 1 ms.

@@ -39,7 +39,9 @@ def plan(quick, fine):
     if quick:
         runs = [("coarse", 0.02), ("coarse", 0.01), ("medium", 0.01)]
     if fine:
-        runs.append(("fine", 0.005))
+        # The fine mesh's contact needs the smaller step to resolve its impacts (at 0.005 s an
+        # open node sank into the pile at 2.81 s): 0.0025 s is the reference.
+        runs += [("fine", 0.005), ("fine", 0.0025)]
     return runs
 
 
@@ -53,7 +55,7 @@ def envelope_error(r, ref):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true", help="coarse and medium at two steps only")
-    ap.add_argument("--fine", action="store_true", help="add the fine level (dt 0.005) as the reference")
+    ap.add_argument("--fine", action="store_true", help="add the fine level (dt 0.005 and 0.0025, the reference)")
     ap.add_argument("--scale", type=float, default=0.05, help="factor on the record (PGA 0.3 g x scale)")
     ap.add_argument("--duration", type=float, default=3.0, help="seconds of the record")
     args = ap.parse_args()

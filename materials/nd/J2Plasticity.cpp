@@ -77,6 +77,9 @@ void J2Plasticity::integrate() {
   const Vector6 relative = deviatoricTrial - backStressCommitted_;
   const double relativeNorm = voigt::norm(relative);
   const double radius = kSqrt23 * yieldStress(xiCommitted_);
+  if (!std::isfinite(relativeNorm))
+    throw ElementStateError("nDMaterial J2Plasticity " + std::to_string(tag()) +
+                            ": the trial strain is not finite (the Newton iteration diverged)");
   // Round-off on the surface (a converged plastic state re-evaluated) stays elastic.
   if (relativeNorm - radius <= 1e-12 * radius) return;
 

@@ -186,6 +186,8 @@ class Numerics:
     # so Newton's rate stays quadratic. Coarse scene, CPU: 73 s against 114 s with plain Newton
     # and its step cuts (the smooth push: 17 s, 0 cuts against 52 s, 10 cuts).
     algorithm: str = "NewtonLineSearch"
+    # Taken from the last converged state when `algorithm` stops (None: stop there).
+    fallback: str = "Newton"
 
     def __post_init__(self):
         if self.level not in LEVELS:
@@ -193,6 +195,9 @@ class Numerics:
         if self.algorithm not in ("Newton", "NewtonLineSearch"):
             raise ValueError(f"lateral_capacity: algorithm must be 'Newton' or 'NewtonLineSearch', "
                              f"got {self.algorithm!r}")
+        if self.fallback not in (None, "Newton", "NewtonLineSearch"):
+            raise ValueError(f"lateral_capacity: fallback must be None, 'Newton' or 'NewtonLineSearch', "
+                             f"got {self.fallback!r}")
 
 
 @dataclass
@@ -210,6 +215,7 @@ class CapacityResult:
     gap_depth: list = field(default_factory=list)  # deepest open contact behind the pile (m)
     converged: bool = False
     cuts: int = 0
+    fallback_at: float = None  # push fraction where the fallback algorithm took over (None: not needed)
     error: str = ""
     z: list = field(default_factory=list)  # profile elevations, head first
     deflection: list = field(default_factory=list)
@@ -345,7 +351,19 @@ class _SolidModel:
                 on_step(self, r)
 
         stepper = adaptive_analyze(m, 1.0, self.n.steps, min_fraction=1.0 / 32, on_step=step)
-        r.converged, r.cuts, r.error = stepper.converged, stepper.cuts, stepper.error
+        r.cuts, r.error = stepper.cuts, stepper.error
+        if not stepper.converged and self.n.fallback and self.n.fallback != self.n.algorithm:
+            # What OpenSees users do when a step fails: another algorithm from the last
+            # converged state (the medium rough push stalled at 0.058 D under the line search,
+            # its Newton iterations cycling; plain Newton carries it further).
+            r.fallback_at = stepper.progress
+            m.algorithm(self.n.fallback)
+            remaining = 1.0 - stepper.progress
+            stepper = adaptive_analyze(m, remaining, max(1, round(remaining * self.n.steps)),
+                                       min_fraction=1.0 / 32, on_step=step)
+            r.cuts += stepper.cuts
+            r.error = stepper.error
+        r.converged = stepper.converged
         r.n_equations = int(m.systemSize())
 
     def record(self, r, iterations):
