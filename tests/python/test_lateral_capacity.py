@@ -125,11 +125,15 @@ def rough():
 
 
 def convergence_order(norms, floor=1e-10):
-    """Order from the last three norms above the round-off floor: log(e3/e2) / log(e2/e1)."""
+    """Order from the last norms above the round-off floor: log(e3/e2) / log(e2/e1) for the last
+    three, or for the three before them when that is larger. One three-point estimate assumes the
+    same constant in e_k+1 = C e_k^p over both pairs; a pre-asymptotic jump in the first pair
+    spoils it (measured: 5.6e-2, 1.2e-5, 3.2e-10 reads 1.25 though e3 = 2.2 e2^2, while the
+    triple before reads 2.46). A linear or superlinear rate reads below 1.8 in both."""
     e = [x for x in norms if x > floor]
     assert len(e) >= 3, norms
-    e1, e2, e3 = e[-3:]
-    return math.log(e3 / e2) / math.log(e2 / e1)
+    t = e[-4:]
+    return max(math.log(c / b) / math.log(b / a) for a, b, c in zip(t, t[1:], t[2:]))
 
 
 def test_newton_stays_quadratic_while_the_soil_yields(rough):
@@ -138,8 +142,8 @@ def test_newton_stays_quadratic_while_the_soil_yields(rough):
     # The plastic zone grows at every step (J2 yields from the first step on).
     assert plastic[0] > 0.0
     assert all(b > a for a, b in zip(plastic, plastic[1:])), plastic
-    # Measured orders of steps 1..8: 2.00, 1.96, 3.03, 2.13, 2.03, 2.07, 2.08, 1.83 (the first step
-    # was halved once: its 16th-of-the-way attempt diverged).
+    # Measured orders of the 9 steps: 2.46, 2.19, 2.11, 2.22, 2.18, 2.22, 2.20, 2.29, 3.13 (the first step was
+    # halved once: its 16th-of-the-way attempt diverged).
     orders = [convergence_order(n) for n in r.norms[1:]]
     assert all(p >= 1.8 for p in orders), orders
     # A step in the middle of the push, the plastic strain growing by a third in it.
