@@ -49,6 +49,10 @@ LEVELS = {
     "medium": (12, 3, 12),
     "fine": (16, 4, 16),
 }
+# The scene's time step per level: the contact's impacts must be resolved, the finer the mesh the
+# smaller the step (benchmarks/results/seismic_pile_accuracy.md: at the default motion the contact
+# run stops at medium with 0.01 s and at fine with 0.005 s, and reaches the end with these).
+SCENE_DT = {"coarse": 0.01, "medium": 0.005, "fine": 0.0025}
 
 SOIL, CONTACT, SOIL_ELASTIC = 1, 2, 3  # material tags (SOIL wraps SOIL_ELASTIC)
 TRANSF = 1
@@ -606,14 +610,15 @@ def _plots(out, main, tied, others=()):
 def scene(level="coarse", out="seismic_pile_output", interface="contact", steps=None, head_mass=0.0, scale=None,
           problem=None, py=True):
     """The chosen interface with recorders, the tied reference and (py=True) the beam on p-y
-    springs; print the table, save plots. steps: time steps over the window (default: dt = 0.01 s).
+    springs; print the table, save plots. steps: time steps over the window (default: dt from
+    SCENE_DT, 0.01, 0.005 and 0.0025 s at coarse, medium and fine).
     Returns (result, tied result, files); the p-y result is `scene.py_result`."""
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     if problem is None:
         problem = SeismicPile(head_mass=head_mass, **({} if scale is None else {"scale": scale}))
-    dt = Numerics.dt if steps is None else problem.duration / steps
+    dt = SCENE_DT[level] if steps is None else problem.duration / steps
     main = run(problem, Numerics(level=level, interface=interface, dt=dt), out=out, record=True)
     tied = main if interface == "tied" else run(problem, Numerics(level=level, interface="tied", dt=dt))
     others = [run(problem, Numerics(level=level, interface="py", dt=dt))] if py and interface != "py" else []
