@@ -34,13 +34,15 @@ import math
 import time
 from dataclasses import dataclass, field
 
+from .circular_pile import CircularPile
+
 # =====================================================================================
 # The problem and the closed form
 # =====================================================================================
 
 
 @dataclass(frozen=True)
-class ClayPile:
+class ClayPile(CircularPile):
     """The physical problem (kN, m, kPa)."""
 
     su: float = 40.0
@@ -76,18 +78,6 @@ class ClayPile:
     @property
     def K0(self):
         return self.nu / (1.0 - self.nu)
-
-    @property
-    def pile_G(self):
-        return self.pile_E / (2.0 * (1.0 + self.pile_nu))
-
-    @property
-    def area(self):
-        return math.pi * self.pile_radius**2
-
-    @property
-    def inertia(self):
-        return math.pi * self.pile_radius**4 / 4.0
 
 
 @dataclass(frozen=True)

@@ -21,6 +21,8 @@ flexible pile (L > lc) in homogeneous elastic soil (rho_c = 1), load H at ground
 import math
 from dataclasses import dataclass
 
+from .circular_pile import CircularPile
+
 # Mesh levels: (n_theta, n_radial, n_z) of the soil O-grid; every level keeps the
 # same geometry and grading so that the levels converge to one answer.
 LEVELS = {
@@ -31,7 +33,7 @@ LEVELS = {
 
 
 @dataclass(frozen=True)
-class LateralPile:
+class LateralPile(CircularPile):
     """The physical problem (kN, m, kPa). Numerical choices live with the models that use it."""
 
     pile_radius: float = 0.5
@@ -44,18 +46,6 @@ class LateralPile:
     gamma: float = 20.0  # soil unit weight (kN/m^3)
     mu: float = 0.5  # pile-soil friction coefficient
     head_disp: float = 0.02  # largest head displacement (m), 2% of the diameter
-
-    @property
-    def pile_G(self):
-        return self.pile_E / (2.0 * (1.0 + self.pile_nu))
-
-    @property
-    def area(self):
-        return math.pi * self.pile_radius**2
-
-    @property
-    def inertia(self):
-        return math.pi * self.pile_radius**4 / 4.0
 
     @property
     def soil_G(self):

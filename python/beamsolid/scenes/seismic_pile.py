@@ -39,6 +39,7 @@ from ..mesh import graded, ogrid
 from ..model import Model
 from ..springs import SoftClay, pile_springs
 from ..boundaries import Tags
+from .circular_pile import CircularPile
 
 RECORD = str(pathlib.Path(__file__).resolve().parents[3] / "examples" / "records" / "synthetic_kt_seed16.acc")
 
@@ -63,7 +64,7 @@ PY_FIRST = 300001  # p-y spring nodes, elements and materials
 
 
 @dataclass(frozen=True)
-class SeismicPile:
+class SeismicPile(CircularPile):
     """The physical problem (kN, m, s, t)."""
 
     pile_radius: float = 0.4
@@ -107,18 +108,6 @@ class SeismicPile:
     @property
     def K0(self):
         return self.soil_nu / (1.0 - self.soil_nu)
-
-    @property
-    def pile_G(self):
-        return self.pile_E / (2.0 * (1.0 + self.pile_nu))
-
-    @property
-    def area(self):
-        return math.pi * self.pile_radius**2
-
-    @property
-    def inertia(self):
-        return math.pi * self.pile_radius**4 / 4.0
 
     def column_omega(self, n):
         """Circular frequency of the n-th shear mode of the soil layer on rigid bedrock (rad/s)."""
