@@ -12,8 +12,8 @@ namespace beamsolid {
 
 namespace {
 
-// The envelope's extra first point, as a fraction of d1 (found by running
-// OpenSees: it puts the first step of a virgin material on Kmax).
+// The envelope's extra first point lies at this fraction of the larger |d1|,
+// on the line of Kmax (found by running OpenSees).
 constexpr double kFirstPoint = 1e-4;
 constexpr double kReversalTolerance = 1e-12;
 
@@ -28,13 +28,14 @@ Pinching4Material::Pinching4Material(int tag, const Side& positive, const Side& 
   k0n_ = negative.stress[0] / negative.strain[0];
   kmax_ = std::max(k0p_, k0n_);
   failureStrain_ = std::max(std::fabs(positive.strain[3]), std::fabs(negative.strain[3]));
+  firstPoint_ = kFirstPoint * std::max(positive.strain[0], -negative.strain[0]);
   // Area under each monotonic envelope up to its fourth point.
   double area[2];
   for (int s = 0; s < 2; ++s) {
     const Side& side = side_[s];
-    double x[6] = {0.0, kFirstPoint * side.strain[0], side.strain[0], side.strain[1], side.strain[2], side.strain[3]};
-    double f[6] = {0.0, kmax_ * kFirstPoint * side.strain[0], side.stress[0], side.stress[1], side.stress[2],
-                   side.stress[3]};
+    const double first = s == 0 ? firstPoint_ : -firstPoint_;
+    double x[6] = {0.0, first, side.strain[0], side.strain[1], side.strain[2], side.strain[3]};
+    double f[6] = {0.0, kmax_ * first, side.stress[0], side.stress[1], side.stress[2], side.stress[3]};
     area[s] = 0.0;
     for (int i = 0; i < 5; ++i) area[s] += 0.5 * (f[i] + f[i + 1]) * (x[i + 1] - x[i]);
   }
@@ -60,10 +61,11 @@ void Pinching4Material::revertToStart() {
 
 void Pinching4Material::envelope(double strain, double dF, double& stress, double& slope) const {
   const Side& s = strain >= 0.0 ? side_[0] : side_[1];
-  const double x[6] = {0.0, kFirstPoint * s.strain[0], s.strain[0], s.strain[1], s.strain[2], s.strain[3]};
+  const double first = strain >= 0.0 ? firstPoint_ : -firstPoint_;
+  const double x[6] = {0.0, first, s.strain[0], s.strain[1], s.strain[2], s.strain[3]};
   const double scale = 1.0 - dF;
-  const double f[6] = {0.0, kmax_ * kFirstPoint * s.strain[0] * scale, s.stress[0] * scale, s.stress[1] * scale,
-                       s.stress[2] * scale, s.stress[3] * scale};
+  const double f[6] = {0.0, kmax_ * first * scale, s.stress[0] * scale, s.stress[1] * scale, s.stress[2] * scale,
+                       s.stress[3] * scale};
   for (int i = 0; i < 5; ++i)
     if (std::fabs(strain) <= std::fabs(x[i + 1])) {
       slope = (f[i + 1] - f[i]) / (x[i + 1] - x[i]);
@@ -128,7 +130,17 @@ void Pinching4Material::buildPath(State& t, const State& c, bool towardsPositive
   const double kD = unloadingStiffness(t, towardsPositive);
   const double kB = unloadingStiffness(t, !towardsPositive);
   Point C{s.rDisp * D.strain, s.rForce * D.stress};
-  if ((D.stress - C.stress) / (D.strain - C.strain) > kD) C.strain = D.strain - (D.stress - C.stress) / kD;
+  if ((D.stress - C.stress) / (D.strain - C.strain) > kD) {
+    // When C must move onto the line of slope kD through D and the unloading
+    // force lies beyond the reloading one, both go to just either side of
+    // their mean first (found by running OpenSees).
+    if (towardsPositive ? fB > C.stress : fB < C.stress) {
+      const double mean = 0.5 * (fB + C.stress);
+      fB = 0.99 * mean;
+      C.stress = 1.01 * mean;
+    }
+    C.strain = D.strain - (D.stress - C.stress) / kD;
+  }
   t.path[0] = R;
   if (direct) {
     t.path[1] = D;
@@ -138,7 +150,8 @@ void Pinching4Material::buildPath(State& t, const State& c, bool towardsPositive
   int n = 1;
   if (towardsPositive ? R.stress < fB : R.stress > fB) {
     const Point B{R.strain + (fB - R.stress) / kB, fB};
-    const bool pastC = towardsPositive ? B.strain >= C.strain : B.strain <= C.strain;
+    const bool pastC = towardsPositive ? B.strain >= C.strain || B.stress >= C.stress
+                                       : B.strain <= C.strain || B.stress <= C.stress;
     if (!pastC) {
       if ((C.stress - B.stress) / (C.strain - B.strain) > std::max(kD, kB)) {
         t.path[1] = D;

@@ -15,8 +15,8 @@ namespace beamsolid {
 // point by point (tests/python/test_uniaxial_oracle.py).
 //
 // Envelope (per side, degraded by the strength damage dF): through the
-// origin, a point at 1e-4*d1 on the line of Kmax = max(K0p, K0n) (K0 =
-// f1/d1), then the four points; past the fourth the last slope continues if
+// origin, a point at 1e-4*max(|d1p|, |d1n|) on the line of Kmax =
+// max(K0p, K0n) (K0 = f1/d1), then the four points; past the fourth the last slope continues if
 // rising, else a tail towards 1.1*f4 at 1e6*d4.
 // Unloading stiffness Ku = K0 (1 - dK). After leaving one envelope towards
 // the other side, the path runs from the reversal point R along Ku to
@@ -92,7 +92,7 @@ class Pinching4Material : public UniaxialMaterial {
   Degradation gK_, gD_, gF_;
   double gE_;
   bool cycleDamage_;
-  double k0p_, k0n_, kmax_, energyMono_, failureStrain_;
+  double k0p_, k0n_, kmax_, energyMono_, failureStrain_, firstPoint_;
   State trial_, committed_;
 };
 
