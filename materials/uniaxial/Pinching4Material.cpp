@@ -98,7 +98,9 @@ void Pinching4Material::updateDamage(const State& c, State& t) const {
     t.lastReversal = c.strain;
     demand = t.cycles;
   } else {
-    demand = energyMono_ > 0.0 ? c.dissipated / energyMono_ : 0.0;
+    // The dissipated energy can dip just below zero on a virgin path whose
+    // first point lies on the steeper side's line; it counts as none.
+    demand = energyMono_ > 0.0 ? std::max(c.dissipated / energyMono_, 0.0) : 0.0;
   }
   auto index = [&](const Degradation& g) {
     const double energyTerm = g.g2 == 0.0 ? 0.0 : g.g2 * std::pow(demand, g.g4);
@@ -150,15 +152,18 @@ void Pinching4Material::buildPath(State& t, const State& c, bool towardsPositive
   int n = 1;
   if (towardsPositive ? R.stress < fB : R.stress > fB) {
     const Point B{R.strain + (fB - R.stress) / kB, fB};
-    const bool pastC = towardsPositive ? B.strain >= C.strain || B.stress >= C.stress
-                                       : B.strain <= C.strain || B.stress <= C.stress;
+    // B past C drops B; a B-C segment steeper (either way) than both
+    // unloading stiffnesses makes the path the straight line R-D; B with a
+    // force beyond C's is dropped (all found by running OpenSees).
+    const bool pastC = towardsPositive ? B.strain >= C.strain : B.strain <= C.strain;
     if (!pastC) {
-      if ((C.stress - B.stress) / (C.strain - B.strain) > std::max(kD, kB)) {
+      if (std::fabs((C.stress - B.stress) / (C.strain - B.strain)) > std::max(kD, kB)) {
         t.path[1] = D;
         t.pathPoints = 2;
         return;
       }
-      t.path[n++] = B;
+      const bool beyondC = towardsPositive ? B.stress >= C.stress : B.stress <= C.stress;
+      if (!beyondC) t.path[n++] = B;
     }
   }
   t.path[n++] = C;
