@@ -96,6 +96,18 @@ def _cases():
     # jumps straight past the initial gap (no re-centering) and back.
     gap_path = _history([0.025, 0.016, 0.035, 0.022, 0.0, 0.03, 0.05, 0.028, 0.012, 0.045, -0.01, 0.06, 0.03],
                         0.002, rng) + [0.07, -0.005, 0.02, 0.07, 0.09, 0.05, 0.03, 0.075]
+    # Pinching4: a spring with asymmetric four-point envelopes (falling past
+    # the peak), cycles growing past the fourth points, with and without the
+    # documented damage (unloading stiffness gK, reloading deformation gD,
+    # strength gF) of both types.
+    p4_path = _history([0.02, -0.015, 0.04, 0.01, 0.03, -0.05, -0.02, -0.04, 0.07, -0.08, 0.0, 0.05, -0.03, 0.09,
+                        -0.1, 0.02, 0.13, -0.14, 0.06], 0.002, rng)
+    p4_env = (10.0, 0.01, 15.0, 0.03, 18.0, 0.06, 12.0, 0.1, -12.0, -0.012, -16.0, -0.035, -19.0, -0.07, -8.0, -0.12)
+    # Unequal initial stiffnesses (1000 and 600) and a rising fourth branch on both sides.
+    p4_stiff = (10.0, 0.01, 15.0, 0.03, 18.0, 0.06, 20.0, 0.1, -12.0, -0.02, -16.0, -0.035, -19.0, -0.07, -22.0, -0.12)
+    p4_ratios = (0.5, 0.25, 0.05, 0.4, 0.3, 0.1)
+    p4_none = (0.0,) * 15
+    p4_all = (0.3, 0.2, 1.2, 1.1, 0.9, 0.4, 0.3, 1.0, 0.9, 0.8, 0.2, 0.2, 1.1, 1.3, 0.7)
     out = {
         "Steel01": (("Steel01", 1, fy, E0, b), steel),
         "Steel01-iso": (("Steel01", 1, fy, E0, b, 0.04, 2.0, 0.03, 1.5), steel),
@@ -141,6 +153,20 @@ def _cases():
         "ElasticPPGap-compression": (("ElasticPPGap", 1, 1000.0, -10.0, -0.01, 0.05), [-e for e in gap_path]),
         "ElasticPPGap-compression-damage": (("ElasticPPGap", 1, 1000.0, -10.0, -0.01, 0.0, "damage"),
                                             [-e for e in gap_path]),
+        "Pinching4": (("Pinching4", 1, *p4_env, *p4_ratios, *p4_none, 10.0, "energy"), p4_path),
+        "Pinching4-stiffness-damage": (("Pinching4", 1, *p4_env, *p4_ratios, 0.5, 0.3, 1.0, 1.0, 0.9,
+                                        *(0.0,) * 10, 10.0, "energy"), p4_path),
+        "Pinching4-deformation-damage": (("Pinching4", 1, *p4_env, *p4_ratios, *(0.0,) * 5, 0.5, 0.3, 1.0, 1.0, 0.9,
+                                          *(0.0,) * 5, 10.0, "energy"), p4_path),
+        "Pinching4-strength-damage": (("Pinching4", 1, *p4_env, *p4_ratios, *(0.0,) * 10, 0.4, 0.3, 1.0, 1.0, 0.7,
+                                       10.0, "energy"), p4_path),
+        "Pinching4-energy-damage": (("Pinching4", 1, *p4_env, *p4_ratios, *p4_all, 10.0, "energy"), p4_path),
+        "Pinching4-cycle-damage": (("Pinching4", 1, *p4_env, *p4_ratios, *p4_all, 10.0, "cycle"), p4_path),
+        "Pinching4-unequal-stiffness": (("Pinching4", 1, *p4_stiff, 0.8, 0.6, 0.3, 0.7, 0.5, -0.2, *p4_all, 5.0,
+                                         "energy"), p4_path),
+        "Pinching4-symmetric": (("Pinching4", 1, *p4_env[:8], 0.2, 0.1, 0.0, *p4_all, 10.0, "cycle"), p4_path),
+        "Pinching4-start-negative": (("Pinching4", 1, *p4_stiff, *p4_ratios, *p4_all, 10.0, "energy"),
+                                     [-e for e in p4_path]),
     }
     # Round-off: from a yielded (cracked, hysteretic) state, steps below machine epsilon both
     # ways, then a step just above it. OpenSees keeps the committed state and tangent for a
@@ -153,6 +179,13 @@ def _cases():
                      ("MultiLinear", 40), ("ElasticPP", 5), ("Hardening", 5)):
         mat, path = out[name] if name in out else (("ElasticPP", 1, E0, ey), steel)
         out[name + "-round-off"] = (mat, _round_off(path, at))
+    # Pinching4 reverses only on a change of 1e-12 or more: below it the step
+    # follows the current branch back (envelope or path).
+    for name, at in (("Pinching4-energy-damage", 60), ("Pinching4-cycle-damage", 140)):
+        mat, path = out[name]
+        out[name + "-round-off"] = (mat, _round_off(path, at))
+        base = path[at]
+        out[name + "-small-reversal"] = (mat, path[:at + 1] + [base - d for d in (1e-13, 2e-13, 1e-11, 0.0, 5e-13)])
     return {name: (mat, strains, parts if name in _COMPOSITES else []) for name, (mat, strains) in out.items()}
 
 
