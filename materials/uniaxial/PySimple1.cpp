@@ -7,6 +7,7 @@
 #include "core/CommandArgs.h"
 #include "core/Registry.h"
 #include "materials/uniaxial/IncreasingRoot.h"
+#include "materials/uniaxial/SoilDashpot.h"
 
 namespace beamsolid {
 
@@ -23,7 +24,6 @@ Backbone backbone(int soilType) {
 }
 constexpr double kNearFieldElastic = 50.0;  // near-field stiffness in the rigid range, pult / y50
 constexpr double kTangentFloor = 0.01;  // smallest component tangent reported, pult / y50
-constexpr double kStressBound = 1.0 - 1.0e-12;
 }  // namespace
 
 PySimple1::PySimple1(int tag, int soilType, double pult, double y50, double Cd, double c)
@@ -145,17 +145,11 @@ void PySimple1::setTrialStrain(double y, double rate) {
 }
 
 double PySimple1::farFieldShare() const {
-  // As OpenSees: the far-field share of the increment from the committed
-  // state, (ye - ye_c) / (y - y_c); with no increment (after commitState)
-  // the tangent share tangent / Kf.
-  if (trial_.y != committed_.y)
-    return (trial_.p - committed_.p) / (farStiffness_ * (trial_.y - committed_.y));
-  return trial_.tangent / farStiffness_;
+  return soildashpot::farFieldShare(trial_.y, committed_.y, trial_.p, committed_.p, trial_.tangent, farStiffness_);
 }
 
 double PySimple1::stress() const {
-  const double bound = kStressBound * pult_;
-  return std::clamp(trial_.p + dashpot_ * farFieldShare() * trial_.rate, -bound, bound);
+  return soildashpot::stress(trial_.p, dashpot_, farFieldShare(), trial_.rate, pult_);
 }
 
 

@@ -8,6 +8,7 @@
 #include "core/CommandArgs.h"
 #include "core/Registry.h"
 #include "materials/uniaxial/IncreasingRoot.h"
+#include "materials/uniaxial/SoilDashpot.h"
 
 namespace beamsolid {
 
@@ -24,7 +25,6 @@ constexpr double kClosed = 1000.0;           // closure in bearing, qult / z50
 constexpr double kOpen = 1.000002e-6;        // closure in uplift, qult / z50 (measured)
 constexpr double kAtRest = 100.0;            // the closure in OpenSees' initial tangent
 constexpr double kTangentFloor = 1.0e-4;  // smallest near-field / drag tangent reported, qult / z50
-constexpr double kStressBound = 1.0 - 1.0e-12;
 }  // namespace
 
 QzSimple1::QzSimple1(int tag, int qzType, double qult, double z50, double suction, double c)
@@ -116,17 +116,11 @@ void QzSimple1::setTrialStrain(double z, double rate) {
 }
 
 double QzSimple1::farFieldShare() const {
-  // As OpenSees: the far-field share of the increment from the committed
-  // state, (ye - ye_c) / (y - y_c); with no increment (after commitState)
-  // the tangent share tangent / Kf.
-  if (trial_.z != committed_.z)
-    return (trial_.q - committed_.q) / (farStiffness_ * (trial_.z - committed_.z));
-  return trial_.tangent / farStiffness_;
+  return soildashpot::farFieldShare(trial_.z, committed_.z, trial_.q, committed_.q, trial_.tangent, farStiffness_);
 }
 
 double QzSimple1::stress() const {
-  const double bound = kStressBound * qult_;
-  return std::clamp(trial_.q + dashpot_ * farFieldShare() * trial_.rate, -bound, bound);
+  return soildashpot::stress(trial_.q, dashpot_, farFieldShare(), trial_.rate, qult_);
 }
 
 void QzSimple1::commitState() {

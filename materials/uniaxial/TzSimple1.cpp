@@ -8,6 +8,7 @@
 #include "core/CommandArgs.h"
 #include "core/Registry.h"
 #include "materials/uniaxial/IncreasingRoot.h"
+#include "materials/uniaxial/SoilDashpot.h"
 
 namespace beamsolid {
 
@@ -18,7 +19,6 @@ struct Backbone {
 // OpenSees' rounded Ce: 0.5 / (1 - c (2^(1/n) - 1)) is 0.707915 and 2.050348.
 Backbone backbone(int tzType) { return tzType == 1 ? Backbone{0.5, 1.5, 0.70791} : Backbone{0.6, 0.85, 2.0504}; }
 constexpr double kNearFieldFloor = 1.0e-4;  // smallest near-field tangent reported, tult / z50
-constexpr double kStressBound = 1.0 - 1.0e-12;
 }  // namespace
 
 TzSimple1::TzSimple1(int tag, int tzType, double tult, double z50, double c)
@@ -63,17 +63,11 @@ void TzSimple1::setTrialStrain(double z, double rate) {
 }
 
 double TzSimple1::farFieldShare() const {
-  // As OpenSees: the far-field share of the increment from the committed
-  // state, (ye - ye_c) / (y - y_c); with no increment (after commitState)
-  // the tangent share tangent / Kf.
-  if (trial_.z != committed_.z)
-    return (trial_.t - committed_.t) / (farStiffness_ * (trial_.z - committed_.z));
-  return trial_.tangent / farStiffness_;
+  return soildashpot::farFieldShare(trial_.z, committed_.z, trial_.t, committed_.t, trial_.tangent, farStiffness_);
 }
 
 double TzSimple1::stress() const {
-  const double bound = kStressBound * tult_;
-  return std::clamp(trial_.t + dashpot_ * farFieldShare() * trial_.rate, -bound, bound);
+  return soildashpot::stress(trial_.t, dashpot_, farFieldShare(), trial_.rate, tult_);
 }
 
 void TzSimple1::commitState() {
