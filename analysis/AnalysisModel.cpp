@@ -308,7 +308,7 @@ void AnalysisModel::enforcePrescribed() {
   const auto imposed = domain_.imposedValues(domain_.currentTime());
   const auto& full = map_.imposedFullDofs();
   for (std::size_t i = 0; i < full.size() && i < imposed.size(); ++i)
-    map_.nodeOfFull(full[i])->setTrialDisp(map_.dofOfFull(full[i]), imposed[i].value);
+    if (full[i] >= 0) map_.nodeOfFull(full[i])->setTrialDisp(map_.dofOfFull(full[i]), imposed[i].value);
   for (const auto& d : map_.dependents()) {
     double u = 0.0;
     for (const auto& [src, c] : d.sources) u += c * map_.nodeOfFull(src)->trialDisp()[map_.dofOfFull(src)];

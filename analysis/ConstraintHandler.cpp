@@ -1,6 +1,7 @@
 #include "analysis/ConstraintHandler.h"
 
 #include <memory>
+#include <string>
 
 #include "core/Registry.h"
 
@@ -11,6 +12,7 @@ std::string ConstraintHandler::name() const {
     case Method::Plain: return "Plain";
     case Method::Transformation: return "Transformation";
     case Method::Penalty: return "Penalty";
+    case Method::Lagrange: return "Lagrange";
   }
   return "?";
 }
@@ -35,6 +37,13 @@ void registerConstraintHandlers(Registry& r) {
     return std::make_unique<ConstraintHandler>(ConstraintHandler::Method::Transformation);
   });
   r.constraintHandlers.add("Penalty", &buildPenalty);
+  r.constraintHandlers.add("Lagrange", [](CommandArgs& args, Domain&) {
+    // alphaS, alphaM (default 1) scale the multiplier equations in OpenSees; they do not change the answer
+    for (const char* name : {"alphaS", "alphaM"})
+      if (!args.done() && args.nextDouble(name) <= 0.0) args.fail(std::string(name) + " must be positive");
+    args.expectEnd();
+    return std::make_unique<ConstraintHandler>(ConstraintHandler::Method::Lagrange);
+  });
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "analysis/DofMap.h"
 
 #include <algorithm>
+#include <iostream>
 #include <map>
 #include <unordered_map>
 
@@ -73,19 +74,34 @@ void DofMap::build(const Domain& domain, const ConstraintHandler& handler, const
   std::unordered_map<int, std::vector<std::pair<int, double>>> sources;
   const bool eliminate = handler.eliminates();
   if (eliminate) {
+    std::vector<std::string> overridden;
     for (int f : imposedFull_) kind[f] = Imposed;
     for (const auto& mp : domain.mps()) {
       for (std::size_t i = 0; i < mp.constrainedDofs.size(); ++i) {
         const int f = fullOf(mp.constrainedNode, mp.constrainedDofs[i]);
-        if (kind[f] != Free)
-          throw OpenSeesError("analysis: " + nameOf(f) +
-                              " is both fixed and constrained by a multi-point constraint; use one of them");
+        if (kind[f] == Dependent)
+          throw OpenSeesError("analysis: " + nameOf(f) + " is constrained by more than one multi-point constraint");
+        if (kind[f] == Imposed && handler.method() == ConstraintHandler::Method::Lagrange)
+          throw OpenSeesError("constraints Lagrange: " + nameOf(f) +
+                              " is both fixed and constrained by a multi-point constraint; BeamSolid enforces "
+                              "Lagrange constraints by elimination and cannot hold both: remove the fix or use "
+                              "constraints('Transformation'), which ignores the fix");
+        if (kind[f] == Imposed) {
+          // OpenSees' Transformation handler lets the equalDOF/rigidLink win over a fix on its constrained dof
+          // (public scripts, e.g. the p-y pile example, rely on it): the fix is dropped, with a warning.
+          overridden.push_back(nameOf(f));
+          std::replace(imposedFull_.begin(), imposedFull_.end(), f, -1);
+        }
         kind[f] = Dependent;
         auto& src = sources[f];
         for (std::size_t k = 0; k < mp.retainedDofs.size(); ++k)
           if (mp.C(i, k) != 0.0) src.push_back({fullOf(mp.retainedNode, mp.retainedDofs[k]), mp.C(i, k)});
       }
     }
+    if (!overridden.empty())
+      std::cerr << "WARNING constraints Transformation: " << overridden.size()
+                << " fixed dof(s) also constrained by a multi-point constraint (" << overridden.front()
+                << (overridden.size() > 1 ? ", ..." : "") << "); their fixes are ignored\n";
   }
 
   // --- resolve every full dof into free full dofs (chains of MPs allowed) ----

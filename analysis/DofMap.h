@@ -72,7 +72,8 @@ class DofMap {
   const std::vector<int>& diagonalPosition() const { return diagPos_; }
 
   // --- prescribed values (elimination handlers) -----------------------------
-  // Full dofs set from the Domain's imposed values, in Domain::imposedValues order.
+  // Full dofs set from the Domain's imposed values, in Domain::imposedValues order; -1 where a multi-point
+  // constraint overrides the value (Transformation).
   const std::vector<int>& imposedFullDofs() const { return imposedFull_; }
   // MP-constrained full dofs in dependency order, with their expression in
   // terms of other full dofs: u_c = sum coef * u[full].

@@ -137,3 +137,82 @@ def test_orient_without_an_in_plane_x_is_refused_in_2d(model):
     model.uniaxialMaterial("Elastic", 1, 20.0)
     with pytest.raises(beamsolid.OpenSeesError, match=r"element zeroLength 1: -orient: the x vector has no component"):
         model.element("zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1, "-orient", 0.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+
+
+@pytest.mark.parametrize("handler", ["Transformation", "Penalty", "Lagrange"])
+def test_a_fix_on_an_equaldof_constrained_dof(model, handler, capfd):
+    """Springs 1-2 and 3-4 (k = 100), node 3 fixed and tied to node 2 by equalDOF, P2 = 10, P4 = 5.
+    Transformation (as OpenSees, which the p-y pile example relies on): the tie wins and the fix is
+    dropped with a warning, so 2 and 3 move together: u2 = (10 + 5)/k, u4 = u2 + 5/k. Penalty
+    enforces both: u2 = u3 = 0, u4 = 5/k (OpenSeesPy 3.7.1 gives these numbers, and with Lagrange
+    too). BeamSolid's Lagrange eliminates, so it cannot hold both: analyze fails and says why."""
+    m = model
+    m.model("basic", "-ndm", 1, "-ndf", 1)
+    for tag in range(1, 5):
+        m.node(tag, 0.0)
+    m.fix(1, 1)
+    m.fix(3, 1)
+    m.uniaxialMaterial("Elastic", 1, 100.0)
+    m.element("zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1)
+    m.element("zeroLength", 2, 3, 4, "-mat", 1, "-dir", 1)
+    m.equalDOF(2, 3, 1)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(2, 10.0)
+    m.load(4, 5.0)
+    m.constraints(handler, *(() if handler == "Transformation" else (1e14, 1e14)))
+    m.numberer("Plain")
+    m.system("UmfPack")
+    m.integrator("LoadControl", 1.0)
+    m.algorithm("Linear")
+    m.analysis("Static")
+    if handler == "Lagrange":
+        assert m.analyze(1) < 0
+        assert "node 3 dof 1 is both fixed and constrained" in m.last_error()
+        return
+    assert m.analyze(1) == 0
+    u = [m.nodeDisp(n, 1) for n in (2, 3, 4)]
+    if handler == "Transformation":
+        assert u == pytest.approx([0.15, 0.15, 0.2], rel=1e-12)
+        assert "node 3 dof 1" in capfd.readouterr().err
+    else:
+        assert u == pytest.approx([0.0, 0.0, 0.05], abs=1e-10)
+
+
+def test_lagrange_constraints_give_the_transformation_answer(model):
+    """A 2D portal's beam tied to its columns' tops by equalDOF (and one rigidLink): the constraints
+    Lagrange and Transformation give the same displacements (1e-12), since both enforce them exactly;
+    alphaS/alphaM are accepted and change nothing; a non-positive one is refused."""
+    def run(*handler):
+        m = model
+        m.wipe()
+        m.model("basic", "-ndm", 2, "-ndf", 3)
+        for tag, x, y in ((1, 0, 0), (2, 4, 0), (3, 0, 3), (4, 4, 3), (5, 0, 3), (6, 4, 3), (7, 2, 4)):
+            m.node(tag, float(x), float(y))
+        m.fix(1, 1, 1, 1)
+        m.fix(2, 1, 1, 1)
+        m.geomTransf("Linear", 1)
+        m.element("elasticBeamColumn", 1, 1, 3, 0.1, 2e8, 1e-3, 1)
+        m.element("elasticBeamColumn", 2, 2, 4, 0.1, 2e8, 1e-3, 1)
+        m.element("elasticBeamColumn", 3, 5, 6, 0.1, 2e8, 2e-3, 1)
+        m.equalDOF(3, 5, 1, 2)
+        m.equalDOF(4, 6, 1, 2, 3)
+        m.rigidLink("beam", 5, 7)
+        m.timeSeries("Linear", 1)
+        m.pattern("Plain", 1, 1)
+        m.load(7, 50.0, -20.0, 5.0)
+        m.load(3, 0.0, 0.0, 3.0)
+        m.constraints(*handler)
+        m.numberer("RCM")
+        m.system("BandGeneral")
+        m.integrator("LoadControl", 1.0)
+        m.algorithm("Linear")
+        m.analysis("Static")
+        assert m.analyze(1) == 0
+        return np.array([m.nodeDisp(n) for n in range(3, 8)])
+    ref = run("Transformation")
+    assert np.abs(ref).max() > 1e-4
+    for handler in (("Lagrange",), ("Lagrange", 10.0, 10.0)):
+        assert rel_err(run(*handler), ref) < 1e-12
+    with pytest.raises(beamsolid.OpenSeesError, match="alphaM"):
+        model.constraints("Lagrange", 1.0, -1.0)
