@@ -28,7 +28,7 @@ int elementClassTag(const std::string& openSeesName) {
       {"FourNodeQuad", 31},      {"Brick", 56},              {"BbarBrick", 57},
       {"DispBeamColumn2d", 62},  {"DispBeamColumn3d", 64},   {"ForceBeamColumn2d", 73},
       {"ForceBeamColumn3d", 74}, {"BeamContact3D", 115},     {"BeamEndContact3D", 118},
-      {"BeamContact3Dp", 124},   {"BeamEndContact3Dp", 125},
+      {"BeamContact3Dp", 124},   {"BeamEndContact3Dp", 125}, {"ElasticTimoshenkoBeam2d", 145},
   };
   const auto it = tags.find(openSeesName);
   return it == tags.end() ? -1 : it->second;
@@ -38,7 +38,7 @@ int elementClassTag(const std::string& openSeesName) {
 std::string elementClassName(const Element& e, int ndm) {
   std::string name = openSeesClassName(e.className());
   if (ndm == 2) {
-    for (const char* beam : {"ElasticBeam", "DispBeamColumn", "ForceBeamColumn"})
+    for (const char* beam : {"ElasticBeam", "DispBeamColumn", "ForceBeamColumn", "ElasticTimoshenkoBeam"})
       if (name == std::string(beam) + "3d") name = std::string(beam) + "2d";
   }
   return name;

@@ -7,6 +7,7 @@ namespace beamsolid {
 std::string openSeesClassName(const std::string& elementClassName) {
   static const std::map<std::string, std::string> table = {
       {"elasticBeamColumn", "ElasticBeam3d"},   {"truss", "Truss"},
+      {"ElasticTimoshenkoBeam", "ElasticTimoshenkoBeam3d"},
       {"corotTruss", "CorotTruss"},             {"zeroLength", "ZeroLength"},
       {"stdBrick", "Brick"},                    {"bbarBrick", "BbarBrick"},
       {"dispBeamColumn", "DispBeamColumn3d"},   {"forceBeamColumn", "ForceBeamColumn3d"},

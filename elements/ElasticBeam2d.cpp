@@ -29,17 +29,19 @@ void ElasticBeam2d::setDomain(Domain&) {
   const auto& p = properties_;
   const double L = length_;
   const double k = p.E * p.Iz / L;
+  // Shear flexibility phi = 12 EI / (G Av L^2) turns 4, 2 into (4 + phi), (2 - phi) over (1 + phi).
+  const double phi = p.Avy > 0.0 ? 12.0 * p.E * p.Iz / (p.G * p.Avy * L * L) : 0.0;
+  const double kii = k * (4.0 + phi) / (1.0 + phi), kij = k * (2.0 - phi) / (1.0 + phi);
   kb_.setZero();
   kb_(0, 0) = p.E * p.A / L;
-  // A released end carries no moment: condensing it out leaves 3EI/L at
-  // the other end.
+  // A released end carries no moment: condensing it out leaves kii - kij^2/kii (3EI/L) at the other end.
   switch (p.release) {
     case 0:
-      kb_(1, 1) = kb_(2, 2) = 4.0 * k;
-      kb_(1, 2) = kb_(2, 1) = 2.0 * k;
+      kb_(1, 1) = kb_(2, 2) = kii;
+      kb_(1, 2) = kb_(2, 1) = kij;
       break;
-    case 1: kb_(2, 2) = 3.0 * k; break;
-    case 2: kb_(1, 1) = 3.0 * k; break;
+    case 1: kb_(2, 2) = kii - kij * kij / kii; break;
+    case 2: kb_(1, 1) = kii - kij * kij / kii; break;
     default: break;
   }
   initialStiff_ = transf_->initialGlobalStiffMatrix(kb_);
@@ -49,7 +51,7 @@ void ElasticBeam2d::setDomain(Domain&) {
   const Eigen::Vector2d x = transf_->axis();
   axes.row(0) << x.x(), x.y(), 0.0;
   axes.row(1) << -x.y(), x.x(), 0.0;
-  const CrdTransf::Matrix12 m12 = beamMass(p.massPerLength, L, p.consistentMass, 0.0, axes);
+  const CrdTransf::Matrix12 m12 = beamMass(p.massPerLength, L, p.consistentMass, 0.0, axes, phi, 0.0, p.Avy > 0.0 ? p.Iz / p.A : 0.0);
   static constexpr int inPlane[6] = {0, 1, 5, 6, 7, 11};
   for (int a = 0; a < 6; ++a)
     for (int b = 0; b < 6; ++b) mass_(a, b) = m12(inPlane[a], inPlane[b]);

@@ -26,6 +26,7 @@ class ElasticBeam2d : public Element {
 
   struct Properties {
     double A = 0.0, E = 0.0, Iz = 0.0;
+    double G = 0.0, Avy = 0.0;  // Avy > 0: shear deformation too (ElasticTimoshenkoBeam)
     double massPerLength = 0.0;
     bool consistentMass = false;
     int release = 0;  // 0 none, 1 moment released at I, 2 at J, 3 both

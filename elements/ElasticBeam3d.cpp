@@ -32,10 +32,13 @@ void ElasticBeam3d::setDomain(Domain&) {
   const double L = length_;
   kb_.setZero();
   kb_(0, 0) = p.E * p.A / L;
-  kb_(1, 1) = kb_(2, 2) = 4.0 * p.E * p.Iz / L;
-  kb_(1, 2) = kb_(2, 1) = 2.0 * p.E * p.Iz / L;
-  kb_(3, 3) = kb_(4, 4) = 4.0 * p.E * p.Iy / L;
-  kb_(3, 4) = kb_(4, 3) = 2.0 * p.E * p.Iy / L;
+  // Shear flexibility phi = 12 EI / (G Av L^2): bending about z shears along y (Avy), about y along z (Avz).
+  const double phiY = p.Avy > 0.0 ? 12.0 * p.E * p.Iz / (p.G * p.Avy * L * L) : 0.0;
+  const double phiZ = p.Avz > 0.0 ? 12.0 * p.E * p.Iy / (p.G * p.Avz * L * L) : 0.0;
+  kb_(1, 1) = kb_(2, 2) = (4.0 + phiY) / (1.0 + phiY) * p.E * p.Iz / L;
+  kb_(1, 2) = kb_(2, 1) = (2.0 - phiY) / (1.0 + phiY) * p.E * p.Iz / L;
+  kb_(3, 3) = kb_(4, 4) = (4.0 + phiZ) / (1.0 + phiZ) * p.E * p.Iy / L;
+  kb_(3, 4) = kb_(4, 3) = (2.0 - phiZ) / (1.0 + phiZ) * p.E * p.Iy / L;
   kb_(5, 5) = p.G * p.J / L;
 
   initialStiff_ = transf_->initialGlobalStiffMatrix(kb_);
@@ -46,7 +49,14 @@ void ElasticBeam3d::formMass() {
   const double m = properties_.massPerLength;
   // Torsional inertia per length m*J/A: exact for circular sections (J = Ip).
   // The mass sits on the flexible length between offset ends, rotated only.
-  mass_ = beamMass(m, length_, properties_.consistentMass, m * properties_.J / properties_.A, transf_->localAxes());
+  const auto& p = properties_;
+  const double torsion = p.torsionalInertia ? m * p.J / p.A : 0.0;
+  const double L2 = length_ * length_;
+  const double phiY = p.Avy > 0.0 ? 12.0 * p.E * p.Iz / (p.G * p.Avy * L2) : 0.0;
+  const double phiZ = p.Avz > 0.0 ? 12.0 * p.E * p.Iy / (p.G * p.Avz * L2) : 0.0;
+  const bool timoshenko = p.Avy > 0.0;
+  mass_ = beamMass(m, length_, p.consistentMass, torsion, transf_->localAxes(), phiY, phiZ,
+                   timoshenko ? p.Iz / p.A : 0.0, timoshenko ? p.Iy / p.A : 0.0);
 }
 
 void ElasticBeam3d::update() { transf_->update(); }

@@ -23,6 +23,8 @@ class ElasticBeam3d : public Element {
 
   struct Properties {
     double A = 0.0, E = 0.0, G = 0.0, J = 0.0, Iy = 0.0, Iz = 0.0;
+    double Avy = 0.0, Avz = 0.0;  // > 0: shear deformation too (ElasticTimoshenkoBeam)
+    bool torsionalInertia = true;  // m J / A about the axis (none in OpenSees' Timoshenko beam's lumped mass)
     double massPerLength = 0.0;
     bool consistentMass = false;
   };

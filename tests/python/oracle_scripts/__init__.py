@@ -8,6 +8,8 @@ script its own).
 """
 
 SCRIPTS = (
+    "timoshenko_beam",
+    "py_pile_springs_public",
     "cantilever3d",
     "brick_block",
     "truss_plastic",
