@@ -1,5 +1,6 @@
 #include "core/ElementRecorder.h"
 
+#include <iostream>
 #include <sstream>
 
 #include "core/CommandArgs.h"
@@ -68,9 +69,13 @@ ElementRecorder::ElementRecorder(const Domain& domain, Spec spec, bool envelope)
   for (int tag : spec_.elementTags) {
     Element& element = domain.element(tag, spec_.context);
     Response r = element.setResponse(spec_.responseArgs);
-    if (!r)
-      throw OpenSeesError(spec_.context + ": element " + std::to_string(tag) + " (" + element.className() +
-                          ") has no response '" + response + "'");
+    if (!r) {
+      // As OpenSees: the element is left out (a recorder no element answers writes nothing), so a
+      // script that records a name some element lacks still runs; the warning says which.
+      std::cerr << "WARNING " << spec_.context << ": element " << tag << " (" << element.className()
+                << ") has no response '" << response << "'; it is left out of the file\n";
+      continue;
+    }
     // OpenSees' XML: eleType (its class name) before eleTag; an envelope
     // with -time wraps each element's block with one time block per value.
     RecorderOutput::XmlBlock block{
@@ -94,6 +99,10 @@ ElementRecorder::ElementRecorder(const Domain& domain, Spec spec, bool envelope)
     entries_.push_back({tag, &element, std::move(r)});
   }
 
+  if (entries_.empty()) {
+    columns.clear();
+    blocks.clear();
+  }
   std::ostringstream rows;
   if (envelope) {
     columns = ResponseEnvelope::columns(columns, echoTime);
@@ -132,7 +141,7 @@ void ElementRecorder::readValues(const Domain& domain, std::vector<double>& out)
 }
 
 void ElementRecorder::record(Domain& domain, double time) {
-  if (output_->closed() || !output_->due(time)) return;
+  if (empty() || output_->closed() || !output_->due(time)) return;
   readValues(domain, values_);
   row_.clear();
   if (spec_.output.echoTime) row_.push_back(time);

@@ -18,7 +18,7 @@ EnvelopeElementRecorder::~EnvelopeElementRecorder() {
 }
 
 void EnvelopeElementRecorder::record(Domain& domain, double time) {
-  if (output_->closed() || !output_->due(time)) return;
+  if (empty() || output_->closed() || !output_->due(time)) return;
   readValues(domain, values_);
   envelope_.add(time, values_);
   output_->noteRecorded(time);

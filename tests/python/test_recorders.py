@@ -478,7 +478,7 @@ def test_a_failed_recorder_command_leaves_no_claim(model, tmp_path):
     path = str(tmp_path / "x.out")
     later = tmp_path / "later"
     failing = [
-        ("Element", "-file", path, "-ele", 1, "noSuchResponse"),   # the element refuses the response
+        ("Element", "-file", path, "-ele", 99, "force"),           # no element 99
         ("Node", "-file", path, "-node", 42, "disp"),               # no node 42
         ("Node", "-file", path, "-node", 2, "disp", 3),             # an extra argument
         ("Node", "-file", str(later / "x.out"), "-node", 2, "disp"),  # claimed, then cannot open: no folder
@@ -506,3 +506,36 @@ def test_pvd_recorders_on_one_name_are_refused(model, tmp_path):
     with open(name + ".pvd") as f:
         assert f.read().count("<DataSet") == 2
     assert m.recorder("PVD", name) == 1  # the refused commands took no tag
+
+
+def test_an_element_recorder_leaves_out_elements_without_the_response(tmp_path, capfd):
+    """As OpenSees: a section response asked of a mix of force-based and elastic members records the
+    force-based ones only (the elastic beam is named in a warning); a name no element has gives an
+    empty file instead of stopping the script."""
+    m = beamsolid.Model()
+    m.model("basic", "-ndm", 2, "-ndf", 3)
+    for tag, y in ((1, 0.0), (2, 3.0), (3, 6.0)):
+        m.node(tag, 0.0, y)
+    m.fix(1, 1, 1, 1)
+    m.geomTransf("Linear", 1)
+    m.section("Elastic", 1, 200.0, 10.0, 30.0)
+    m.beamIntegration("Lobatto", 1, 1, 3)
+    m.element("forceBeamColumn", 1, 1, 2, 1, 1)
+    m.element("elasticBeamColumn", 2, 2, 3, 10.0, 200.0, 30.0, 1)
+    mixed, unknown = tmp_path / "mixed.out", tmp_path / "unknown.out"
+    m.recorder("Element", "-file", str(mixed), "-time", "-ele", 1, 2, "section", 1, "force")
+    m.recorder("Element", "-file", str(unknown), "-time", "-ele", 1, 2, "noSuchResponse")
+    assert "element 2 (elasticBeamColumn) has no response 'section 1 force'" in capfd.readouterr().err
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(3, 1.0, 0.0, 0.0)
+    m.integrator("LoadControl", 0.5)
+    m.analysis("Static")
+    assert m.analyze(2) == 0
+    m.wipe()
+    rows = [[float(x) for x in line.split()] for line in mixed.read_text().splitlines()]
+    # time, then the force-based member's first section: N and M = 1 x 6 at the base (factor 0.5, 1).
+    assert [len(r) for r in rows] == [3, 3]
+    assert rows[1][0] == pytest.approx(1.0)
+    assert abs(rows[1][2]) == pytest.approx(6.0, rel=1e-10)
+    assert unknown.read_text() == ""
