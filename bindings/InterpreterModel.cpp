@@ -176,9 +176,7 @@ Result Interpreter::fixCoordinate(CommandArgs& a, int axis) {
     // node's ndf are ignored; a dof already fixed stays fixed.
     for (int d = 0; d < n->ndf() && d < static_cast<int>(flags.size()); ++d) {
       if (!flags[d]) continue;
-      bool already = false;
-      for (const auto& s : domain_->sps()) already = already || (s.nodeTag == tag && s.dof == d);
-      if (!already) domain_->addSP(SPConstraint{tag, d, 0.0, -1}, a.context());
+      if (!domain_->isFixed(tag, d)) domain_->addSP(SPConstraint{tag, d, 0.0, -1}, a.context());
     }
   }
   (void)count;
@@ -485,12 +483,10 @@ Result Interpreter::sp(CommandArgs& a) {
   const Node& n = domain_->node(tag, a.context());
   if (dof < 1 || dof > n.ndf())
     a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(n.ndf()));
-  for (const auto& s : domain_->sps())
-    if (s.nodeTag == tag && s.dof == dof - 1) a.fail("dof " + std::to_string(dof) + " is already fixed");
+  if (domain_->isFixed(tag, dof - 1)) a.fail("dof " + std::to_string(dof) + " is already fixed");
   for (const auto& [ptag, p] : domain_->patterns())
-    for (const auto& s : p->sps())
-      if (s.nodeTag == tag && s.dof == dof - 1)
-        a.fail("dof " + std::to_string(dof) + " already has an sp in pattern " + std::to_string(ptag));
+    if (p->hasSP(tag, dof - 1))
+      a.fail("dof " + std::to_string(dof) + " already has an sp in pattern " + std::to_string(ptag));
   currentPattern(a).addSP(SPConstraint{tag, dof - 1, value, currentPatternTag_});
   domain_->touch();
   return {};

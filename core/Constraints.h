@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "core/Types.h"
@@ -15,6 +16,11 @@ struct SPConstraint {
   int patternTag = -1;
   bool homogeneous() const { return value == 0.0; }
 };
+
+// A (node, dof) pair as one number, for sets of constrained dofs.
+inline std::int64_t dofKey(int nodeTag, int dof) {
+  return static_cast<std::int64_t>(static_cast<std::uint32_t>(nodeTag)) << 16 | dof;
+}
 
 // A multi-point constraint: u_c[constrainedDofs] = C * u_r[retainedDofs].
 struct MPConstraint {

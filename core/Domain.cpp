@@ -56,9 +56,13 @@ void Domain::removeNode(int tag, const std::string& context) {
                             std::to_string(etag) + "; remove the element first");
   sps_.erase(std::remove_if(sps_.begin(), sps_.end(), [&](const SPConstraint& s) { return s.nodeTag == tag; }),
              sps_.end());
+  for (int d = 0; d < nodes_.at(tag)->ndf(); ++d) fixedDofs_.erase(dofKey(tag, d));
   mps_.erase(std::remove_if(mps_.begin(), mps_.end(),
                             [&](const MPConstraint& m) {
-                              return m.constrainedNode == tag || m.retainedNode == tag;
+                              const bool gone = m.constrainedNode == tag || m.retainedNode == tag;
+                              if (gone)
+                                for (int d : m.constrainedDofs) mpConstrainedDofs_.erase(dofKey(m.constrainedNode, d));
+                              return gone;
                             }),
              mps_.end());
   for (auto& [ptag, p] : patterns_) p->removeReferencesTo(tag, -1);
@@ -157,10 +161,9 @@ void Domain::addSP(const SPConstraint& sp, const std::string& context) {
   if (sp.dof < 0 || sp.dof >= n.ndf())
     throw OpenSeesError(context + ": dof " + std::to_string(sp.dof + 1) + " is out of range for node " +
                         std::to_string(sp.nodeTag) + " (ndf " + std::to_string(n.ndf()) + ")");
-  for (const auto& s : sps_)
-    if (s.nodeTag == sp.nodeTag && s.dof == sp.dof)
-      throw OpenSeesError(context + ": node " + std::to_string(sp.nodeTag) + " dof " +
-                          std::to_string(sp.dof + 1) + " is already fixed");
+  if (!fixedDofs_.insert(dofKey(sp.nodeTag, sp.dof)).second)
+    throw OpenSeesError(context + ": node " + std::to_string(sp.nodeTag) + " dof " + std::to_string(sp.dof + 1) +
+                        " is already fixed");
   sps_.push_back(sp);
   touch();
 }
@@ -170,6 +173,7 @@ bool Domain::removeSP(int nodeTag, int dof) {
                            [&](const SPConstraint& s) { return s.nodeTag == nodeTag && s.dof == dof; });
   bool removed = it != sps_.end();
   sps_.erase(it, sps_.end());
+  fixedDofs_.erase(dofKey(nodeTag, dof));
   for (auto& [ptag, p] : patterns_) removed = p->removeSP(nodeTag, dof) || removed;
   if (removed) touch();
   return removed;
@@ -189,18 +193,20 @@ void Domain::addMP(MPConstraint mp, const std::string& context) {
     if (d < 0 || d >= c.ndf())
       throw OpenSeesError(context + ": dof " + std::to_string(d + 1) +
                           " is out of range for constrained node " + std::to_string(c.tag()));
-    for (const auto& m : mps_)
-      if (m.constrainedNode == c.tag() &&
-          std::find(m.constrainedDofs.begin(), m.constrainedDofs.end(), d) != m.constrainedDofs.end())
-        throw OpenSeesError(context + ": dof " + std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
-                            " is already constrained by another multi-point constraint");
+    if (mpConstrainedDofs_.count(dofKey(c.tag(), d)))
+      throw OpenSeesError(context + ": dof " + std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
+                          " is already constrained by another multi-point constraint");
   }
+  for (int d : mp.constrainedDofs) mpConstrainedDofs_.insert(dofKey(c.tag(), d));
   mp.tag = nextMPTag_++;
   mps_.push_back(std::move(mp));
   touch();
 }
 
 bool Domain::removeMP(int constrainedNode) {
+  for (const MPConstraint& m : mps_)
+    if (m.constrainedNode == constrainedNode)
+      for (int d : m.constrainedDofs) mpConstrainedDofs_.erase(dofKey(constrainedNode, d));
   auto it = std::remove_if(mps_.begin(), mps_.end(),
                            [&](const MPConstraint& m) { return m.constrainedNode == constrainedNode; });
   bool removed = it != mps_.end();

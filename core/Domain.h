@@ -4,7 +4,9 @@
 #include <set>
 #include <memory>
 #include <string>
+#include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "core/Constraints.h"
@@ -93,6 +95,8 @@ class Domain {
   void addSP(const SPConstraint& sp, const std::string& context);
   bool removeSP(int nodeTag, int dof);
   const std::vector<SPConstraint>& sps() const { return sps_; }
+  // Whether fix/sp (not a pattern's sp) constrains this dof.
+  bool isFixed(int nodeTag, int dof) const { return fixedDofs_.count(dofKey(nodeTag, dof)) > 0; }
   void addMP(MPConstraint mp, const std::string& context);
   bool removeMP(int constrainedNode);
   const std::vector<MPConstraint>& mps() const { return mps_; }
@@ -200,6 +204,10 @@ class Domain {
   std::map<int, std::unique_ptr<Element>> elements_;
   std::vector<SPConstraint> sps_;
   std::vector<MPConstraint> mps_;
+  // dofKey()s of sps_ and of the MPs' constrained dofs: duplicate checks in O(1), not a scan per
+  // command (quadratic in fix/equalDOF counts).
+  std::unordered_set<std::int64_t> fixedDofs_;
+  std::unordered_set<std::int64_t> mpConstrainedDofs_;
   std::map<int, std::unique_ptr<LoadPattern>> patterns_;
   std::map<int, std::unique_ptr<Recorder>> recorders_;
   int nextRecorderTag_ = 0;

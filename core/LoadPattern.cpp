@@ -16,6 +16,7 @@ bool LoadPattern::removeSP(int nodeTag, int dof) {
                            [&](const SPConstraint& s) { return s.nodeTag == nodeTag && s.dof == dof; });
   bool removed = it != sps_.end();
   sps_.erase(it, sps_.end());
+  spDofs_.erase(dofKey(nodeTag, dof));
   return removed;
 }
 
@@ -45,7 +46,11 @@ void LoadPattern::removeReferencesTo(int nodeTag, int elementTag) {
                                    [&](const NodalLoad& l) { return l.nodeTag == nodeTag; }),
                     nodalLoads_.end());
   sps_.erase(std::remove_if(sps_.begin(), sps_.end(),
-                            [&](const SPConstraint& s) { return s.nodeTag == nodeTag; }),
+                            [&](const SPConstraint& s) {
+                              if (s.nodeTag != nodeTag) return false;
+                              spDofs_.erase(dofKey(s.nodeTag, s.dof));
+                              return true;
+                            }),
              sps_.end());
   elementLoads_.erase(std::remove_if(elementLoads_.begin(), elementLoads_.end(),
                                      [&](const EleLoad& l) { return l.elementTag == elementTag; }),

@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "core/Constraints.h"
@@ -35,8 +36,12 @@ class LoadPattern {
 
   void addNodalLoad(int nodeTag, Vector load) { nodalLoads_.push_back({nodeTag, std::move(load)}); }
   void addElementLoad(int elementTag, ElementLoad load) { elementLoads_.push_back({elementTag, std::move(load)}); }
-  void addSP(SPConstraint sp) { sps_.push_back(sp); }
+  void addSP(SPConstraint sp) {
+    spDofs_.insert(dofKey(sp.nodeTag, sp.dof));
+    sps_.push_back(sp);
+  }
   bool removeSP(int nodeTag, int dof);
+  bool hasSP(int nodeTag, int dof) const { return spDofs_.count(dofKey(nodeTag, dof)) > 0; }
 
   const std::vector<NodalLoad>& nodalLoads() const { return nodalLoads_; }
   const std::vector<EleLoad>& elementLoads() const { return elementLoads_; }
@@ -63,6 +68,7 @@ class LoadPattern {
   std::vector<NodalLoad> nodalLoads_;
   std::vector<EleLoad> elementLoads_;
   std::vector<SPConstraint> sps_;
+  std::unordered_set<std::int64_t> spDofs_;  // dofKey()s of sps_ (the sp command checks them per call)
 };
 
 }  // namespace beamsolid

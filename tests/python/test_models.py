@@ -1,4 +1,6 @@
 """Independent models, the OpenSees-compatible module, and node queries."""
+import pytest
+
 import beamsolid
 
 
@@ -77,3 +79,29 @@ def test_printmodel_prints_through_python_stdout(ops, capsys):
     ops.node(7, 0.0, 0.0, 0.0)
     ops.printModel()
     assert "Node 7" in capsys.readouterr().out
+
+
+def test_constraint_bookkeeping_after_removal(ops):
+    """The fixed and equalDOF-constrained dofs are looked up in sets kept with the constraints: a dof
+    fixed twice or tied twice is refused; after remove('sp'), remove('node') or a re-tie the dof is
+    free again; fixZ skips dofs fixed already."""
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    for tag in range(1, 5):
+        ops.node(tag, float(tag), 0.0, 0.0)
+    ops.fix(1, 1, 0, 1)
+    with pytest.raises(ops.OpenSeesError, match="node 1 dof 3 is already fixed"):
+        ops.fix(1, 0, 0, 1)
+    ops.remove("sp", 1, 3)
+    ops.fix(1, 0, 0, 1)  # free again after the removal
+    ops.fixX(1.0, 1, 1, 1)  # dofs 1 and 3 of node 1 are fixed already: only dof 2 is added
+    with pytest.raises(ops.OpenSeesError, match="already fixed"):
+        ops.fix(1, 0, 1, 0)
+    ops.equalDOF(2, 3, 1, 2)
+    with pytest.raises(ops.OpenSeesError, match="dof 2 of node 3 is already constrained"):
+        ops.equalDOF(4, 3, 2)
+    ops.equalDOF(4, 3, 3)  # another dof of node 3 may be tied
+    ops.fix(4, 1, 1, 1)
+    ops.remove("node", 4)  # takes its fix and the tie 4-3 with it
+    ops.node(4, 4.0, 0.0, 0.0)
+    ops.fix(4, 1, 1, 1)
+    ops.equalDOF(4, 3, 3)
