@@ -51,4 +51,5 @@ SCRIPTS = (
     "script_queries",
     "solid_elements",
     "solid_footing",
+    "uniaxial_sections",
 )
