@@ -52,4 +52,5 @@ SCRIPTS = (
     "solid_elements",
     "solid_footing",
     "uniaxial_sections",
+    "convergence_tests",
 )
