@@ -53,4 +53,5 @@ SCRIPTS = (
     "solid_footing",
     "uniaxial_sections",
     "convergence_tests",
+    "beam_integrations_more",
 )
