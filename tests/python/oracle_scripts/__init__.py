@@ -54,4 +54,5 @@ SCRIPTS = (
     "uniaxial_sections",
     "convergence_tests",
     "beam_integrations_more",
+    "generalized_alpha",
 )
