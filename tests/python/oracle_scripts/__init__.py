@@ -55,4 +55,5 @@ SCRIPTS = (
     "convergence_tests",
     "beam_integrations_more",
     "generalized_alpha",
+    "drift_recorders",
 )
