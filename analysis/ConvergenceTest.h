@@ -32,11 +32,19 @@ class ConvergenceTest {
   // OpenSees' testIter: one past the last iteration when the step failed.
   int reportedIterations() const { return failed_ ? iteration_ + 1 : iteration_; }
   const std::vector<double>& norms() const { return norms_; }
+  // What testNorm returns: the norms padded with zeros to maxIter entries
+  // (at most `cap`); a test with two norms gives both lists, one after the other.
+  virtual std::vector<double> reportedNorms(int cap) const;
   double tolerance() const { return tolerance_; }
   int maxIterations() const { return maxIterations_; }
 
  protected:
   virtual double measure(const LinearSystem& system) = 0;
+  // Whether the value measure() just returned (and recorded) passes; the
+  // relative tests compare a ratio, the combined ones two norms.
+  virtual bool passes(double value) const { return value <= tolerance_; }
+  // Whether the step has failed before maxIter (NormDispAndUnbalance's maxIncr).
+  virtual bool diverged() const { return false; }
   double norm(const Vector& v) const;
 
   double tolerance_;

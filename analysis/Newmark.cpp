@@ -1,5 +1,6 @@
 #include "analysis/Newmark.h"
 
+#include <cmath>
 #include <memory>
 
 #include "core/Domain.h"
@@ -7,14 +8,15 @@
 
 namespace beamsolid {
 
-Newmark::Newmark(double gamma, double beta, Form form, double alpha, std::string name)
-    : gamma_(gamma), beta_(beta), alpha_(alpha), form_(form), name_(std::move(name)) {}
+Newmark::Newmark(double gamma, double beta, Form form, double alpha, std::string name, double alphaM)
+    : gamma_(gamma), beta_(beta), alpha_(alpha), alphaM_(alphaM), form_(form), name_(std::move(name)) {}
 
 void Newmark::setNode(const AnalysisModel& model, int f) const {
   const DofMap& map = model.dofMap();
   const double u = alpha_ == 1.0 ? u1_[f] : (1.0 - alpha_) * un_[f] + alpha_ * u1_[f];
   const double v = alpha_ == 1.0 ? v1_[f] : (1.0 - alpha_) * vn_[f] + alpha_ * v1_[f];
-  map.nodeOfFull(f)->setTrialResponse(map.dofOfFull(f), u, v, a1_[f]);
+  const double a = alphaM_ == 1.0 ? a1_[f] : (1.0 - alphaM_) * an_[f] + alphaM_ * a1_[f];
+  map.nodeOfFull(f)->setTrialResponse(map.dofOfFull(f), u, v, a);
 }
 
 int Newmark::newStep(AnalysisModel& model) {
@@ -26,10 +28,10 @@ int Newmark::newStep(AnalysisModel& model) {
     case Form::V: cu_ = beta_ * dt / gamma_, cv_ = 1.0, ca_ = 1.0 / (gamma_ * dt); break;
     case Form::A: cu_ = beta_ * dt * dt, cv_ = gamma_ * dt, ca_ = 1.0; break;
   }
-  cK_ = alpha_ * cu_, cC_ = alpha_ * cv_, cM_ = ca_;
+  cK_ = alpha_ * cu_, cC_ = alpha_ * cv_, cM_ = alphaM_ * ca_;
   const DofMap& map = model.dofMap();
   const int n = map.numFullDofs();
-  un_.resize(n), vn_.resize(n), u1_.resize(n), v1_.resize(n), a1_.resize(n);
+  un_.resize(n), vn_.resize(n), an_.resize(n), u1_.resize(n), v1_.resize(n), a1_.resize(n);
   // Predictor: U_n+1 = U_n, and V, A from the Newmark relations with it.
   for (int f = 0; f < n; ++f) {
     const Node& node = *map.nodeOfFull(f);
@@ -37,6 +39,7 @@ int Newmark::newStep(AnalysisModel& model) {
     const double u = node.committedDisp()[d], v = node.committedVel()[d], a = node.committedAccel()[d];
     un_[f] = u1_[f] = u;
     vn_[f] = v;
+    an_[f] = a;
     v1_[f] = (1.0 - gamma_ / beta_) * v + dt * (1.0 - 0.5 * gamma_ / beta_) * a;
     a1_[f] = -v / (beta_ * dt) + (1.0 - 0.5 / beta_) * a;
     setNode(model, f);
@@ -65,8 +68,8 @@ int Newmark::update(AnalysisModel& model, const Vector& x) {
 }
 
 void Newmark::commit(AnalysisModel& model, int) {
-  if (alpha_ == 1.0) return;
-  // HHT converged at t_n + alpha dt: the domain commits the n+1 state.
+  if (alpha_ == 1.0 && alphaM_ == 1.0) return;
+  // HHT / generalized alpha converged at the alpha-state: the domain commits the n+1 state.
   const DofMap& map = model.dofMap();
   for (int f = 0; f < map.numFullDofs(); ++f)
     map.nodeOfFull(f)->setTrialResponse(map.dofOfFull(f), u1_[f], v1_[f], a1_[f]);
@@ -115,7 +118,28 @@ std::unique_ptr<Integrator> buildHHT(CommandArgs& args, Domain&) {
   return std::make_unique<Newmark>(gamma, beta, Newmark::Form::D, alpha, "HHT");
 }
 
+// GeneralizedAlpha alphaM alphaF <gamma beta>: defaults gamma = 1/2 + alphaM -
+// alphaF, beta = (1 + alphaM - alphaF)^2 / 4 (second order; unconditionally
+// stable for alphaM >= alphaF >= 1/2).
+std::unique_ptr<Integrator> buildGeneralizedAlpha(CommandArgs& args, Domain&) {
+  const std::size_t atM = args.position();
+  const double alphaM = args.nextDouble("alphaM");
+  const std::size_t atF = args.position();
+  const double alphaF = args.nextDouble("alphaF");
+  if (!(alphaM > 0.0) || !std::isfinite(alphaM)) args.failAt(atM, "alphaM", "a positive number (alphaM = 1: HHT)");
+  if (!(alphaF > 0.0 && alphaF <= 1.0)) args.failAt(atF, "alphaF", "a number in (0, 1] (alphaF = 1: no force averaging)");
+  double gamma = 0.5 + alphaM - alphaF, beta = 0.25 * (1.0 + alphaM - alphaF) * (1.0 + alphaM - alphaF);
+  if (!args.done()) {
+    gamma = args.nextDouble("gamma");
+    beta = args.nextDouble("beta");
+  }
+  args.expectEnd();
+  if (!(gamma > 0.0) || !(beta > 0.0)) args.fail("gamma and beta must be positive");
+  return std::make_unique<Newmark>(gamma, beta, Newmark::Form::D, alphaF, "GeneralizedAlpha", alphaM);
+}
+
 void registerNewmark(Registry& r) {
+  r.integrators.add("GeneralizedAlpha", &buildGeneralizedAlpha);
   r.integrators.add("Newmark", &buildNewmark);
   r.integrators.add("HHT", &buildHHT);
 }

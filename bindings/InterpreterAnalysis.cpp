@@ -187,13 +187,10 @@ Result Interpreter::testIter(CommandArgs& a) {
 Result Interpreter::testNorm(CommandArgs& a) {
   a.expectEnd();
   if (!components_.test) a.fail("no convergence test: call test(...) or analysis(...) first");
-  std::vector<double> norms = components_.test->norms();
   // OpenSees pads the list with zeros to maxIter entries; a huge maxIter
   // (e.g. 2^31 - 1, "never give up") must not allocate gigabytes for it.
   constexpr int maxPadded = 100000;
-  const int length = std::min(components_.test->maxIterations(), maxPadded);
-  if (static_cast<int>(norms.size()) < length) norms.resize(length, 0.0);
-  return norms;
+  return components_.test->reportedNorms(maxPadded);
 }
 
 // As OpenSees: the size of the system as the last analyze built it (0 before

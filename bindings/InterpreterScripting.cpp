@@ -60,7 +60,7 @@ std::string sectionClassName(const std::string& name, int ndm) {
   const std::string dim = ndm == 2 ? "2d" : "3d";
   if (name == "Elastic") return "ElasticSection" + dim;
   if (name == "Fiber" || name == "WFSection2d" || name == "RCSection2d") return "FiberSection" + dim;
-  if (name == "Aggregator") return "SectionAggregator";
+  if (name == "Aggregator" || name == "Uniaxial") return "SectionAggregator";  // OpenSees builds Uniaxial as one
   return name;
 }
 

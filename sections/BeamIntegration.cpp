@@ -104,6 +104,11 @@ void BeamIntegration::gaussRadau(int n, std::vector<double>& xi, std::vector<dou
 void BeamIntegration::newtonCotes(int n, std::vector<double>& xi, std::vector<double>& weights) {
   xi.resize(n);
   for (int i = 0; i < n; ++i) xi[i] = double(i) / (n - 1);
+  weights = momentWeights(xi);
+}
+
+std::vector<double> BeamIntegration::momentWeights(const std::vector<double>& xi) {
+  const int n = static_cast<int>(xi.size());
   // Weights integrate 1, x, ..., x^(n-1) exactly on [0, 1].
   Eigen::MatrixXd V(n, n);
   Eigen::VectorXd moments(n);
@@ -112,7 +117,38 @@ void BeamIntegration::newtonCotes(int n, std::vector<double>& xi, std::vector<do
     moments[k] = 1.0 / (k + 1);
   }
   const Eigen::VectorXd w = V.colPivHouseholderQr().solve(moments);
-  weights.assign(w.data(), w.data() + n);
+  return std::vector<double>(w.data(), w.data() + n);
+}
+
+std::vector<double> BeamIntegration::midDistanceWeights(const std::vector<double>& xi) {
+  // Each point owns the stretch between the midpoints to its neighbours, the
+  // first from 0 and the last to 1 (in the order of the locations).
+  const std::size_t n = xi.size();
+  std::vector<double> w(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double left = i == 0 ? 0.0 : 0.5 * (xi[i - 1] + xi[i]);
+    const double right = i + 1 == n ? 1.0 : 0.5 * (xi[i] + xi[i + 1]);
+    w[i] = right - left;
+  }
+  return w;
+}
+
+void BeamIntegration::trapezoidal(int n, std::vector<double>& xi, std::vector<double>& weights) {
+  xi.resize(n);
+  weights.assign(n, 1.0 / (n - 1));
+  for (int i = 0; i < n; ++i) xi[i] = double(i) / (n - 1);
+  weights.front() = weights.back() = 0.5 / (n - 1);
+}
+
+void BeamIntegration::compositeSimpson(int n, std::vector<double>& xi, std::vector<double>& weights) {
+  // Simpson (h/3)(1, 4, 1) on each pair of the n - 1 equal intervals.
+  xi.resize(n);
+  weights.resize(n);
+  const double h = 1.0 / (n - 1);
+  for (int i = 0; i < n; ++i) {
+    xi[i] = i * h;
+    weights[i] = (i == 0 || i == n - 1) ? h / 3.0 : (i % 2 == 1 ? 4.0 * h / 3.0 : 2.0 * h / 3.0);
+  }
 }
 
 const char* BeamIntegration::ruleName(Rule rule) {
@@ -123,6 +159,11 @@ const char* BeamIntegration::ruleName(Rule rule) {
     case Rule::NewtonCotes: return "NewtonCotes";
     case Rule::HingeRadau: return "HingeRadau";
     case Rule::HingeRadauTwo: return "HingeRadauTwo";
+    case Rule::Trapezoidal: return "Trapezoidal";
+    case Rule::CompositeSimpson: return "CompositeSimpson";
+    case Rule::UserDefined: return "UserDefined";
+    case Rule::FixedLocation: return "FixedLocation";
+    case Rule::MidDistance: return "MidDistance";
   }
   return "?";
 }
@@ -130,7 +171,9 @@ const char* BeamIntegration::ruleName(Rule rule) {
 int BeamIntegration::minPoints(Rule rule) {
   switch (rule) {
     case Rule::Lobatto:
-    case Rule::NewtonCotes: return 2;
+    case Rule::NewtonCotes:
+    case Rule::Trapezoidal: return 2;
+    case Rule::CompositeSimpson: return 3;
     case Rule::HingeRadau:
     case Rule::HingeRadauTwo: return 6;
     default: return 1;
@@ -143,6 +186,8 @@ int BeamIntegration::maxPoints(Rule rule) {
     case Rule::NewtonCotes: return 12;
     case Rule::HingeRadau:
     case Rule::HingeRadauTwo: return 6;
+    // FixedLocation's Vandermonde system is ill-conditioned beyond this.
+    case Rule::FixedLocation: return 12;
     default: return 30;
   }
 }
@@ -153,10 +198,49 @@ BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTag
   if (rule == Rule::HingeRadau || rule == Rule::HingeRadauTwo)
     throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
                         ": a hinge rule needs secI, lpI, secJ, lpJ, secE");
+  if (rule == Rule::UserDefined || rule == Rule::FixedLocation || rule == Rule::MidDistance)
+    throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
+                        ": needs the locations of its points");
   if (n < minPoints(rule) || n > maxPoints(rule))
     throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
                         ": the number of points must lie in " + std::to_string(minPoints(rule)) + ".." +
                         std::to_string(maxPoints(rule)) + ", got " + std::to_string(n));
+  if (rule == Rule::CompositeSimpson && n % 2 == 0)
+    throw OpenSeesError(std::string("beamIntegration CompositeSimpson ") + std::to_string(tag) +
+                        ": the number of points must be odd, got " + std::to_string(n));
+}
+
+BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags, std::vector<double> locations,
+                                 std::vector<double> weights)
+    : tag_(tag), rule_(rule), sectionTags_(std::move(sectionTags)), givenXi_(std::move(locations)) {
+  const std::string context = std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag);
+  const std::size_t n = sectionTags_.size();
+  if (rule != Rule::UserDefined && rule != Rule::FixedLocation && rule != Rule::MidDistance)
+    throw OpenSeesError(context + ": not a rule with given locations");
+  if (n < 1 || static_cast<int>(n) > maxPoints(rule))
+    throw OpenSeesError(context + ": the number of points must lie in 1.." + std::to_string(maxPoints(rule)));
+  if (givenXi_.size() != n) throw OpenSeesError(context + ": needs one location per section");
+  for (double x : givenXi_)
+    if (!(x >= 0.0 && x <= 1.0))
+      throw OpenSeesError(context + ": locs must lie in [0, 1] (fractions of the length), got " + std::to_string(x));
+  if (rule == Rule::UserDefined) {
+    if (weights.size() != n) throw OpenSeesError(context + ": needs one weight per section");
+    for (double w : weights)
+      if (!std::isfinite(w)) throw OpenSeesError(context + ": wts must be finite numbers");
+    givenWeights_ = std::move(weights);
+  } else if (rule == Rule::FixedLocation) {
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (givenXi_[i] == givenXi_[j])
+          throw OpenSeesError(context + ": two points at the same location " + std::to_string(givenXi_[i]) +
+                              " (the weights are undetermined)");
+    givenWeights_ = momentWeights(givenXi_);
+  } else {
+    for (std::size_t i = 1; i < n; ++i)
+      if (givenXi_[i] < givenXi_[i - 1])
+        throw OpenSeesError(context + ": locs must be in ascending order (the weights come from the midpoints between neighbours)");
+    givenWeights_ = midDistanceWeights(givenXi_);
+  }
 }
 
 BeamIntegration::BeamIntegration(int tag, Rule rule, const Hinges& hinges) : tag_(tag), rule_(rule), hinges_(hinges) {
@@ -182,6 +266,14 @@ void BeamIntegration::pointsAndWeights(double length, std::vector<double>& xi, s
     case Rule::Legendre: gaussLegendre(n, xi, weights); return;
     case Rule::Radau: gaussRadau(n, xi, weights); return;
     case Rule::NewtonCotes: newtonCotes(n, xi, weights); return;
+    case Rule::Trapezoidal: trapezoidal(n, xi, weights); return;
+    case Rule::CompositeSimpson: compositeSimpson(n, xi, weights); return;
+    case Rule::UserDefined:
+    case Rule::FixedLocation:
+    case Rule::MidDistance:
+      xi = givenXi_;
+      weights = givenWeights_;
+      return;
     case Rule::HingeRadau:
     case Rule::HingeRadauTwo: break;
   }
@@ -222,6 +314,32 @@ std::unique_ptr<BeamIntegration> buildRule(CommandArgs& args, Domain& domain, Be
     for (int s : {h.sectionI, h.sectionJ, h.sectionInterior}) domain.sections.get(s, args.context());
     return std::make_unique<BeamIntegration>(tag, rule, h);
   }
+  if (rule == BeamIntegration::Rule::UserDefined || rule == BeamIntegration::Rule::FixedLocation ||
+      rule == BeamIntegration::Rule::MidDistance) {
+    const std::size_t at = args.position();
+    const int n = args.nextInt("N");
+    if (n < 1 || n > BeamIntegration::maxPoints(rule))
+      args.failAt(at, "N", "a number of points in 1.." + std::to_string(BeamIntegration::maxPoints(rule)));
+    const bool withWeights = rule == BeamIntegration::Rule::UserDefined;
+    const std::size_t expected = static_cast<std::size_t>(n) * (withWeights ? 3 : 2);
+    if (args.remaining() != expected)
+      args.fail(std::string("expected N, *secTags, *locs") + (withWeights ? ", *wts" : "") + ": " +
+                std::to_string(expected) + " numbers after N = " + std::to_string(n) + ", got " +
+                std::to_string(args.remaining()));
+    std::vector<int> sectionTags;
+    std::vector<double> locs, wts;
+    for (int i = 0; i < n; ++i) sectionTags.push_back(args.nextInt("secTag"));
+    for (int i = 0; i < n; ++i) {
+      const std::size_t li = args.position();
+      locs.push_back(args.nextDouble("loc"));
+      if (!(locs.back() >= 0.0 && locs.back() <= 1.0)) args.failAt(li, "loc", "a location in [0, 1]");
+    }
+    if (withWeights)
+      for (int i = 0; i < n; ++i) wts.push_back(args.nextDouble("wt"));
+    args.expectEnd();
+    for (int s : sectionTags) domain.sections.get(s, args.context());
+    return std::make_unique<BeamIntegration>(tag, rule, std::move(sectionTags), std::move(locs), std::move(wts));
+  }
   const std::size_t numbers = args.remaining();
   std::vector<int> sectionTags;
   if (numbers == 2) {
@@ -253,7 +371,8 @@ std::unique_ptr<BeamIntegration> buildRule(CommandArgs& args, Domain& domain, Be
 void registerBeamIntegrations(Registry& r) {
   using Rule = BeamIntegration::Rule;
   for (Rule rule : {Rule::Lobatto, Rule::Legendre, Rule::Radau, Rule::NewtonCotes, Rule::HingeRadau,
-                    Rule::HingeRadauTwo})
+                    Rule::HingeRadauTwo, Rule::Trapezoidal, Rule::CompositeSimpson, Rule::UserDefined,
+                    Rule::FixedLocation, Rule::MidDistance})
     r.beamIntegrations.add(BeamIntegration::ruleName(rule),
                            [rule](CommandArgs& args, Domain& domain) { return buildRule(args, domain, rule); });
 }

@@ -20,9 +20,21 @@ namespace beamsolid {
 //   'HingeRadauTwo'  two-point Radau over lp: the end (lp/4) and 2/3 lp (3lp/4),
 //                    both the hinge section
 // with two Gauss points of section secE on the interior.
+// Rules with given points, (rule, tag, N, *secTags, *locs <, *wts>):
+//   'UserDefined'    the given locations and weights
+//   'FixedLocation'  the given locations, weights integrating 1, x, ..., x^(N-1)
+//                    exactly (the Vandermonde system of the manual)
+//   'MidDistance'    the given locations, each weighted by the distance between
+//                    the midpoints to its neighbours (ends at 0 and 1)
+// and with equally spaced points, (rule, tag, secTag, N) or (rule, tag, N, *secTags):
+//   'Trapezoidal'       both ends, weights 1/(2(N-1)) at the ends, 1/(N-1) inside
+//   'CompositeSimpson'  both ends, N odd, Simpson's rule on each pair of intervals
 class BeamIntegration {
  public:
-  enum class Rule { Lobatto, Legendre, Radau, NewtonCotes, HingeRadau, HingeRadauTwo };
+  enum class Rule {
+    Lobatto, Legendre, Radau, NewtonCotes, HingeRadau, HingeRadauTwo,
+    Trapezoidal, CompositeSimpson, UserDefined, FixedLocation, MidDistance
+  };
   struct Hinges {
     int sectionI = 0;
     double lengthI = 0.0;
@@ -33,6 +45,10 @@ class BeamIntegration {
 
   // A Gauss or Newton-Cotes rule with one section tag per point.
   BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags);
+  // A rule with given locations (UserDefined, FixedLocation, MidDistance);
+  // `weights` only for UserDefined. Throws OpenSeesError for bad input.
+  BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags, std::vector<double> locations,
+                  std::vector<double> weights);
   // A hinge rule (HingeRadau, HingeRadauTwo).
   BeamIntegration(int tag, Rule rule, const Hinges& hinges);
 
@@ -52,6 +68,11 @@ class BeamIntegration {
   static void gaussLegendre(int n, std::vector<double>& xi, std::vector<double>& weights);
   static void gaussRadau(int n, std::vector<double>& xi, std::vector<double>& weights);
   static void newtonCotes(int n, std::vector<double>& xi, std::vector<double>& weights);
+  static void trapezoidal(int n, std::vector<double>& xi, std::vector<double>& weights);
+  static void compositeSimpson(int n, std::vector<double>& xi, std::vector<double>& weights);
+  // Weights that integrate 1, x, ..., x^(n-1) exactly on [0, 1] at points xi.
+  static std::vector<double> momentWeights(const std::vector<double>& xi);
+  static std::vector<double> midDistanceWeights(const std::vector<double>& xi);
 
   static const char* ruleName(Rule rule);
   // Smallest and largest number of points a rule accepts.
@@ -63,6 +84,7 @@ class BeamIntegration {
   Rule rule_;
   std::vector<int> sectionTags_;
   Hinges hinges_;
+  std::vector<double> givenXi_, givenWeights_;  // the rules with given locations
 };
 
 }  // namespace beamsolid

@@ -53,4 +53,9 @@ SCRIPTS = (
     "script_queries",
     "solid_elements",
     "solid_footing",
+    "uniaxial_sections",
+    "convergence_tests",
+    "beam_integrations_more",
+    "generalized_alpha",
+    "drift_recorders",
 )
