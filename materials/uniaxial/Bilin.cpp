@@ -179,6 +179,7 @@ void Bilin::setTrialStrain(double strain, double) {
     }
   }
   t.work = c.work + 0.5 * (c.stress + t.stress) * step;
+  if (crossing) t.workAtCrossing = t.work;
   t.direction = dir;
   SideState& reached = t.side[strain > 0.0 ? 0 : 1];
   if (std::fabs(strain) > std::fabs(reached.extreme)) reached.extreme = strain;
