@@ -33,11 +33,13 @@ Bilin::Bilin(int tag, double K0, const SideInput& positive, const SideInput& neg
     const double as = in.as / (1.0 + n * (1.0 - in.as));
     SideState& st = initial_[s];
     st.My = in.My;
+    st.as = in.as;
     st.hardening = as * Ke_;
     const double thetaY = in.My / Ke_;
     const double thetaC = thetaY + sg * in.thetaP;
     const double Mc = in.My + st.hardening * sg * in.thetaP;
     const double ac = -std::fabs(Mc) / (in.thetaPc * K0);
+    st.ac = ac;
     st.capSlope = ac / (1.0 + n * (1.0 - ac)) * Ke_;
     st.capIntercept = Mc - st.capSlope * thetaC;
     residual_[s] = sg * in.res * std::fabs(in.My);
@@ -96,8 +98,8 @@ void Bilin::setTrialStrain(double strain, double) {
   const int dir = step > 0.0 ? 1 : -1;
   const int side = step > 0.0 ? 0 : 1;
 
-  if (strain >= thetaU_[0] || strain <= -thetaU_[1]) t.failed = true;
-  if (t.failed) {
+  // Beyond theta_u the spring carries (next to) nothing; back inside, it goes on from there.
+  if (strain >= thetaU_[0] || strain <= -thetaU_[1]) {
     t.stress = dir * kFailedStress;
     t.tangent = kResidualSlope;
     t.direction = dir;
@@ -109,7 +111,9 @@ void Bilin::setTrialStrain(double strain, double) {
   if (c.direction != 0 && dir != c.direction && det_.lambdaK > 0.0) {
     const double energy = c.work - c.workAtCrossing - c.stress * c.stress / (2.0 * c.K);
     const double b = beta(energy, 2.0 * det_.lambdaK * energyCapacity_ - c.workAtCrossing - energy, det_.cK);
-    t.K = c.K * (1.0 - b);
+    // With nFactor the loss applies to the member and reaches the spring scaled (as for as).
+    t.stiffnessRatio = c.stiffnessRatio * (1.0 - b);
+    t.K = Ke_ * t.stiffnessRatio / (1.0 + nFactor_ * (1.0 - t.stiffnessRatio));
   }
   const double K = t.K;
   const double predictor = c.stress + K * step;
@@ -123,7 +127,8 @@ void Bilin::setTrialStrain(double strain, double) {
     if (det_.lambdaS > 0.0) {
       const double b = beta(energy, det_.lambdaS * energyCapacity_ - work, det_.cS);
       s.My *= 1.0 - D_[side] * b;
-      s.hardening *= 1.0 - D_[side] * b;
+      s.as *= 1.0 - D_[side] * b;
+      s.hardening = s.as / (1.0 + nFactor_ * (1.0 - s.as)) * Ke_;
     }
     if (det_.lambdaC > 0.0) {
       const double b = beta(energy, det_.lambdaC * energyCapacity_ - work, det_.cC);
@@ -137,7 +142,10 @@ void Bilin::setTrialStrain(double strain, double) {
       const SideState& o = initial_[side];
       const double movedIntercept = o.capIntercept * s.capFactor;
       const double drop = o.My - residual_[side];
-      if (drop != 0.0) s.capSlope = o.capSlope * (s.My - residual_[side]) / drop;
+      if (drop != 0.0) {
+        s.ac = o.ac * (s.My - residual_[side]) / drop;
+        s.capSlope = s.ac / (1.0 + nFactor_ * (1.0 - s.ac)) * Ke_;
+      }
       const double hardeningIntercept = s.My - s.hardening * s.My / Ke_;
       const double pivot = (movedIntercept - hardeningIntercept) / (s.hardening - o.capSlope);
       s.capIntercept = movedIntercept + (o.capSlope - s.capSlope) * pivot;
@@ -148,22 +156,16 @@ void Bilin::setTrialStrain(double strain, double) {
   Bound b = bound(s, side, strain);
   if (sg * predictor > sg * b.stress) {
     if (crossing) {
-      // Where the zero-stress point lies beyond the origin, OpenSees stops at the point where
-      // the unloading line meets the bound.
+      // Where the zero-stress point lies beyond the origin and the unloading line meets the
+      // hardening line where that is the bound, OpenSees stops at the meeting point.
       const double zeroStress = c.strain - c.stress / K;
       if (sg * zeroStress < 0.0) {
-        const double lines[3][2] = {{s.My - s.hardening * s.My / Ke_, s.hardening},
-                                    {s.capIntercept, s.capSlope},
-                                    {residual_[side], 0.0}};
-        double best = strain;
-        for (const auto& line : lines) {
-          const double x = (line[0] - c.stress + K * c.strain) / (K - line[1]);
-          if (!std::isfinite(x) || sg * (x - c.strain) < 0.0 || sg * (x - best) >= 0.0) continue;
+        const double intercept = s.My - s.hardening * s.My / Ke_;
+        const double x = (intercept - c.stress + K * c.strain) / (K - s.hardening);
+        if (std::isfinite(x) && sg * (x - c.strain) >= 0.0 && sg * (x - strain) <= 0.0) {
           const Bound at = bound(s, side, x);
-          const double gap = c.stress + K * (x - c.strain) - at.stress;
-          if (std::fabs(gap) <= 1e-9 * (std::fabs(at.stress) + std::fabs(c.stress))) best = x;
+          if (at.branch == kHardening) b = at;
         }
-        b = bound(s, side, best);
       }
     }
     if (b.branch == kResidual && s.lastBound != kResidual) b.stress = residual_[side] + kResidualSlope * strain;

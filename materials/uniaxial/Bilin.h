@@ -83,15 +83,16 @@ class Bilin : public UniaxialMaterial {
   struct SideState {
     double My = 0.0, hardening = 0.0, capIntercept = 0.0, capSlope = 0.0;
     double capFactor = 1.0;  // product of the (1 - D beta_C)
+    double as = 0.0, ac = 0.0;  // hardening and post-capping ratios before the nFactor modification
     double extreme = 0.0;         // largest |strain| reached on this side of zero
     Branch lastBound = kElastic;  // the bound branch the last step on it ended on
   };
   struct State {
     double strain = 0.0, stress = 0.0, tangent = 0.0;
     double K = 0.0;                      // unloading stiffness
+    double stiffnessRatio = 1.0;         // its loss before the nFactor modification
     double work = 0.0, workAtCrossing = 0.0;
     int direction = 0;                   // sign of the last strain increment
-    bool failed = false;
     std::array<SideState, 2> side{};
   };
 
