@@ -32,7 +32,7 @@ Bilin::Bilin(int tag, double K0, const SideInput& positive, const SideInput& neg
     // stiffer than the spring's share (Ibarra & Krawinkler 2005, appendix B).
     const double as = in.as / (1.0 + n * (1.0 - in.as));
     SideState& st = initial_[s];
-    st.My = in.My;
+    st.My = st.yield = in.My;
     st.as = in.as;
     st.hardening = as * Ke_;
     const double thetaY = in.My / Ke_;
@@ -43,6 +43,7 @@ Bilin::Bilin(int tag, double K0, const SideInput& positive, const SideInput& neg
     st.capSlope = ac / (1.0 + n * (1.0 - ac)) * Ke_;
     st.capIntercept = Mc - st.capSlope * thetaC;
     residual_[s] = sg * in.res * std::fabs(in.My);
+    st.residual = residual_[s];
     thetaU_[s] = in.thetaU;
     D_[s] = in.D;
   }
@@ -61,11 +62,11 @@ void Bilin::revertToStart() {
 
 Bilin::Bound Bilin::bound(const SideState& s, int side, double strain) const {
   const double sg = sign_[side];
-  const double hardening = s.My + s.hardening * (strain - s.My / Ke_);
+  const double hardening = s.yield + s.hardening * (strain - s.yield / Ke_);
   const double capping = s.capIntercept + s.capSlope * strain;
   Bound b = sg * hardening <= sg * capping ? Bound{hardening, s.hardening, kHardening}
                                             : Bound{capping, s.capSlope, kCapping};
-  if (sg * b.stress < sg * residual_[side]) b = Bound{residual_[side], kResidualSlope, kResidual};
+  if (sg * b.stress < sg * s.residual) b = Bound{s.residual, kResidualSlope, kResidual};
   return b;
 }
 
@@ -115,8 +116,14 @@ void Bilin::setTrialStrain(double strain, double) {
     t.stiffnessRatio = c.stiffnessRatio * (1.0 - b);
     t.K = Ke_ * t.stiffnessRatio / (1.0 + nFactor_ * (1.0 - t.stiffnessRatio));
   }
+  // The elastic line starts at the last reversal (the origin before any): OpenSees evaluates
+  // it from there, not step by step (visible in round-off at the corners).
+  if (c.direction != 0 && dir != c.direction) {
+    t.refStrain = c.strain;
+    t.refStress = c.stress;
+  }
   const double K = t.K;
-  const double predictor = c.stress + K * step;
+  const double predictor = t.refStress + K * (strain - t.refStrain);
   const bool crossing = c.stress * predictor < 0.0;
   SideState& s = t.side[side];
   if (crossing) {
@@ -149,6 +156,14 @@ void Bilin::setTrialStrain(double strain, double) {
       const double hardeningIntercept = s.My - s.hardening * s.My / Ke_;
       const double pivot = (movedIntercept - hardeningIntercept) / (s.hardening - o.capSlope);
       s.capIntercept = movedIntercept + (o.capSlope - s.capSlope) * pivot;
+      // Where the post-capping line now meets the elastic line before the yield point, that
+      // meeting point becomes the yield point (the hardening line moves with it; My itself,
+      // which scales the post-capping slope, does not).
+      const double meet = s.capIntercept / (Ke_ - s.capSlope);
+      const bool cut = sign_[side] * meet < sign_[side] * s.My / Ke_;
+      s.yield = cut ? Ke_ * meet : s.My;
+      // The residual follows a cut yield point (Res times it), not My's deterioration.
+      s.residual = cut ? input_[side].res * s.yield : residual_[side];
     }
   }
 
@@ -160,7 +175,7 @@ void Bilin::setTrialStrain(double strain, double) {
       // hardening line where that is the bound, OpenSees stops at the meeting point.
       const double zeroStress = c.strain - c.stress / K;
       if (sg * zeroStress < 0.0) {
-        const double intercept = s.My - s.hardening * s.My / Ke_;
+        const double intercept = s.yield - s.hardening * s.yield / Ke_;
         const double x = (intercept - c.stress + K * c.strain) / (K - s.hardening);
         if (std::isfinite(x) && sg * (x - c.strain) >= 0.0 && sg * (x - strain) <= 0.0) {
           const Bound at = bound(s, side, x);
@@ -168,7 +183,10 @@ void Bilin::setTrialStrain(double strain, double) {
         }
       }
     }
-    if (b.branch == kResidual && s.lastBound != kResidual) b.stress = residual_[side] + kResidualSlope * strain;
+    // The step that enters the residual gives (Res times the current yield point) + 1e-7 theta,
+    // the steps on it Res*|My0| (as OpenSees).
+    if (b.branch == kResidual)
+      b.stress = s.lastBound != kResidual ? s.residual + kResidualSlope * strain : residual_[side];
     t.stress = b.stress;
     t.tangent = b.slope;
     s.lastBound = b.branch;
@@ -176,7 +194,7 @@ void Bilin::setTrialStrain(double strain, double) {
     t.stress = predictor;
     t.tangent = K;
     if (crossing) {
-      const double thetaY = s.My / Ke_;
+      const double thetaY = s.yield / Ke_;
       t.tangent = sg * (s.extreme - thetaY) <= 0.0 ? Ke_ : bound(s, side, s.extreme).slope;
     }
   }

@@ -81,7 +81,9 @@ class Bilin : public UniaxialMaterial {
   };
   // The deteriorating lines of one side.
   struct SideState {
-    double My = 0.0, hardening = 0.0, capIntercept = 0.0, capSlope = 0.0;
+    double My = 0.0, yield = 0.0;  // My (deteriorated) and the yield point the bound uses
+    double residual = 0.0;
+    double hardening = 0.0, capIntercept = 0.0, capSlope = 0.0;
     double capFactor = 1.0;  // product of the (1 - D beta_C)
     double as = 0.0, ac = 0.0;  // hardening and post-capping ratios before the nFactor modification
     double extreme = 0.0;         // largest |strain| reached on this side of zero
@@ -92,6 +94,7 @@ class Bilin : public UniaxialMaterial {
     double K = 0.0;                      // unloading stiffness
     double stiffnessRatio = 1.0;         // its loss before the nFactor modification
     double work = 0.0, workAtCrossing = 0.0;
+    double refStrain = 0.0, refStress = 0.0;  // start of the current elastic line
     int direction = 0;                   // sign of the last strain increment
     std::array<SideState, 2> side{};
   };
