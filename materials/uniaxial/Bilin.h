@@ -12,34 +12,42 @@ namespace beamsolid {
 // (Ibarra, Medina & Krawinkler 2005; Lignos & Krawinkler 2011). The rules below were found by
 // driving OpenSeesPy 3.7.1 as a black box (tests/python/test_uniaxial_oracle.py).
 //
-// Backbone per side (n = nFactor, Ke = (1+n) K0, as' = as/(1+n(1-as))): elastic to
-// theta_y = My/Ke, the hardening line of slope as'*Ke to the cap at theta_y + theta_p
-// (moment Mc), the post-capping line of slope ac'*Ke (ac = -Mc/(theta_pc*K0),
-// ac' = ac/(1+n(1-ac))) down to the residual Res*|My|, whose slope is reported as 1e-7; at
-// |theta| >= theta_u the spring fails for good (stress +-1e-10 with the sign of the step,
-// tangent 1e-7). These lines are fixed in the plane (kinematic, as Steel01): the stress moves
-// with the unloading stiffness K between the positive bound (min of hardening and capping lines,
-// not below the residual) and the negative one.
-// Cyclic deterioration, E_t = Lamda*My_Plus, W the work done so far (trapezoid rule over the
-// committed steps), W_c its value at the last zero crossing of the stress:
-//  - at each zero crossing of the stress (elastic predictor) the excursion that ends,
-//    E_i = W - W_c (W including the crossing step), deteriorates the side being entered:
-//    My and the hardening slope by (1 - D*beta_S), the post-capping line's intercept at
-//    theta = 0 by (1 - D*beta_C), beta = (E_i/(E_t - W))^c;
-//  - at each reversal of the strain increment the unloading stiffness K deteriorates by
-//    (1 - beta_K), beta_K = (E/(2*E_t,K - W_c - E))^c_K, E = W - W_c - f^2/(2K) at the reversal.
+// Backbone per side (n = nFactor, Ke = (1+n) K0, and any ratio r below enters as
+// r' = r/(1+n(1-r))): elastic to theta_y = My/Ke, the hardening line of slope as'*Ke to the
+// cap at theta_y + theta_p (moment Mc), the post-capping line of slope ac'*Ke
+// (ac = -Mc/(theta_pc*K0)) down to the residual Res*|My|, whose slope is reported as 1e-7.
+// While |theta| >= theta_u the stress is +-1e-10 (sign of the step), tangent 1e-7; back
+// inside, the spring goes on from there. The lines are fixed in the plane (kinematic, as
+// Steel01): the stress moves along the elastic line (slope K, from the last reversal)
+// between the positive bound (min of hardening and capping lines, not below the residual)
+// and the negative one.
+// Cyclic deterioration (E_t = Lamda*My_Plus, W the work done so far by the trapezoid rule,
+// W_c its value at the last zero crossing of the stress):
+//  - at a zero crossing of the elastic predictor the excursion's energy E_i = W - W_c (W
+//    through the crossing step with the predictor) deteriorates the side being entered:
+//    My and as (before the n modification) by (1 - D beta_S), the post-capping line's
+//    intercept at theta = 0 by the product of the (1 - D beta_C), beta = (E_i/(E_t - W))^c.
+//    The post-capping line is then rebuilt: the original line, moved, is turned about its
+//    meeting point with the hardening line to the slope ac0 (My - Res|My0|)/(My0 - Res|My0|)
+//    (n-modified); where it meets the elastic line through the origin before the yield point,
+//    that point becomes the yield point (My itself unchanged) and the residual Res times it.
+//  - at a reversal of the strain increment, K's ratio to Ke (before the n modification)
+//    deteriorates by (1 - beta_K), beta_K = (E/(2 Lamda_K My_Plus - W_c - E))^c_K,
+//    E = W - W_c - f^2/(2K) at the reversal.
 // Lamda = 0 switches a mode off; Lamda_A and c_A are read and ignored (no reloading stiffness
 // in a bilinear model).
-// OpenSees' quirks reproduced: the step that enters the residual gives Res*|My| + 1e-7*theta
-// (later steps Res*|My|); on the step where the stress crosses zero the tangent is the slope of
-// the new side's bound at the largest strain reached on that side (Ke before it yielded), and
-// when such a step hits the bound while the zero-stress point lies beyond the origin the stress
-// is the bound's value where the unloading line meets it.
-// Known differences from OpenSees (docs/commands.md): strength deterioration also changes
-// OpenSees' post-capping slope (not reproduced), the energy exceeding E_t, a step that crosses
-// zero and lands on the post-capping line (OpenSees fails the spring there), unloading from the
-// first residual step, and a one-step 1e-8 difference on some entries to the residual after
-// cycling.
+// OpenSees' quirks reproduced: the step that enters the residual gives the (current) residual
+// + 1e-7*theta, the steps on it Res*|My0|; the step on which the stress crosses zero reports as
+// tangent the slope of the new side's bound at the largest strain reached on that side (Ke
+// before it yielded); when such a step reaches the bound with the zero-stress point beyond the
+// origin and the elastic line meets the hardening line on the bound, the stress stops there.
+// Known differences from OpenSees (docs/commands.md, benchmarks/bilin_oracle_histories.py):
+// other steps that cross zero stress and reach the other side's bound in one step (steps of
+// two yield rotations or more), re-entering the residual (OpenSees gives one step at exactly
+// Res*|My0| with slope -1e-7, or keeps Res*|My0| + 1e-7 theta after strength deterioration),
+// a deteriorated post-capping line below the residual (OpenSees enters the residual later, or
+// fails the spring where the line reaches zero), and the energy exceeding E_t (beta is capped
+// at 1 here).
 class Bilin : public UniaxialMaterial {
  public:
   struct SideInput {

@@ -120,6 +120,14 @@ def _cases():
     bl_none = (0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0)
     bl_geo = (0.03, 0.04, 0.1, 0.12, 0.3, 0.25, 0.2, 0.25)
     bl_all = (3.0, 2.5, 1.0, 4.0, 1.2, 0.9, 1.0, 1.1)
+    # Six cycles of +-0.03 in steps of 0.001, then a push to -0.3: with Lamda_C = 0.6 the
+    # post-capping line moves inside the yield point (cutting the yield point and residual).
+    bl_cycles, current = [], 0
+    for target in [30, -30] * 6 + [0]:
+        while current != target:
+            current += 1 if target > current else -1
+            bl_cycles.append(0.001 * current)
+    bl_cycles += [-0.001 * k for k in range(1, 300)]
     out = {
         "Steel01": (("Steel01", 1, fy, E0, b), steel),
         "Steel01-iso": (("Steel01", 1, fy, E0, b, 0.04, 2.0, 0.03, 1.5), steel),
@@ -187,6 +195,8 @@ def _cases():
         "Bilin-unloading-stiffness": (("Bilin", 1, *bl_side, 0.0, 0.0, 0.0, 2.0, *bl_none[4:], *bl_geo, 1.0, 1.0),
                                       bl_path),
         "Bilin-all-asymmetric": (("Bilin", 1, *bl_side, *bl_all, *bl_geo, 0.7, 0.9), bl_path),
+        "Bilin-post-capping-cuts-yield": (("Bilin", 1, *bl_side, 0.0, 0.6, 0.0, 0.0, *bl_none[4:], *bl_geo, 1.0, 1.0),
+                                          bl_cycles),
         "Bilin-all-nFactor": (("Bilin", 1, *bl_side, *bl_all, *bl_geo, 0.7, 0.9, 3.0), bl_path),
         "Pinching4-start-negative": (("Pinching4", 1, *p4_stiff, *p4_ratios, *p4_all, 10.0, "energy"),
                                      [-e for e in p4_path]),
