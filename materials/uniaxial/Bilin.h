@@ -23,8 +23,9 @@ namespace beamsolid {
 // and the negative one.
 // Cyclic deterioration (E_t = Lamda*My_Plus, W the work done so far by the trapezoid rule,
 // W_c its value at the last zero crossing of the stress):
-//  - at a zero crossing of the elastic predictor the excursion's energy E_i = W - W_c (W
-//    through the crossing step with the predictor) deteriorates the side being entered:
+//  - at a zero crossing of the elastic predictor the excursion's energy E_i = W - W_c (the
+//    crossing step's work taken with the predictor; W_c is then reset to W with the final
+//    stress) deteriorates the side being entered:
 //    My and as (before the n modification) by (1 - D beta_S), the post-capping line's
 //    intercept at theta = 0 by the product of the (1 - D beta_C), beta = (E_i/(E_t - W))^c.
 //    The post-capping line is then rebuilt: the original line, moved, is turned about its
