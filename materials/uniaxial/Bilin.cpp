@@ -71,9 +71,13 @@ Bilin::Bound Bilin::bound(const SideState& s, int side, double strain) const {
 }
 
 double Bilin::beta(double energy, double capacity, double c) const {
-  if (!(energy > 0.0)) return 0.0;
   const double left = capacity;
   // Past the energy capacity OpenSees' response is erratic; here the mode is exhausted.
+  if (!(left > 0.0)) return 1.0;
+  // An elastic excursion after yielding can end with a little less work than it started
+  // with: OpenSees then strengthens by the (negative) beta; with c != 1 its power is not
+  // defined and the mode is left alone here.
+  if (energy < 0.0) return c == 1.0 ? energy / left : 0.0;
   if (!(left > energy)) return 1.0;
   return std::pow(energy / left, c);
 }
@@ -109,7 +113,7 @@ void Bilin::setTrialStrain(double strain, double) {
 
   // Unloading stiffness deterioration at a reversal, from the energy of the excursion so far
   // less the elastic energy that unloading gives back.
-  if (c.direction != 0 && dir != c.direction && det_.lambdaK > 0.0) {
+  if (c.direction != 0 && dir != c.direction && det_.lambdaK > 0.0 && c.loadedOnBound) {
     const double energy = c.work - c.workAtCrossing - c.stress * c.stress / (2.0 * c.K);
     const double b = beta(energy, 2.0 * det_.lambdaK * energyCapacity_ - c.workAtCrossing - energy, det_.cK);
     // With nFactor the loss applies to the member and reaches the spring scaled (as for as).
@@ -119,6 +123,7 @@ void Bilin::setTrialStrain(double strain, double) {
   // The elastic line starts at the last reversal (the origin before any): OpenSees evaluates
   // it from there, not step by step (visible in round-off at the corners).
   if (c.direction != 0 && dir != c.direction) {
+    t.loadedOnBound = false;
     t.refStrain = c.strain;
     t.refStress = c.stress;
   }
@@ -130,18 +135,20 @@ void Bilin::setTrialStrain(double strain, double) {
     // The excursion ends: its energy deteriorates the side being entered.
     const double work = c.work + 0.5 * (c.stress + predictor) * step;
     const double energy = work - c.workAtCrossing;
-    t.workAtCrossing = work;
-    if (det_.lambdaS > 0.0) {
+    // Only an excursion that reached a bound deteriorates anything (OpenSees: elastic
+    // cycles leave the model as it was).
+    t.yielded = false;
+    if (c.yieldedOnce && det_.lambdaS > 0.0) {
       const double b = beta(energy, det_.lambdaS * energyCapacity_ - work, det_.cS);
       s.My *= 1.0 - D_[side] * b;
       s.as *= 1.0 - D_[side] * b;
       s.hardening = s.as / (1.0 + nFactor_ * (1.0 - s.as)) * Ke_;
     }
-    if (det_.lambdaC > 0.0) {
+    if (c.yieldedOnce && det_.lambdaC > 0.0) {
       const double b = beta(energy, det_.lambdaC * energyCapacity_ - work, det_.cC);
       s.capFactor *= 1.0 - D_[side] * b;
     }
-    if (det_.lambdaS > 0.0 || det_.lambdaC > 0.0) {
+    if (c.yieldedOnce && (det_.lambdaS > 0.0 || det_.lambdaC > 0.0)) {
       // The post-capping line as OpenSees rebuilds it (found by running it): the original
       // line moved towards the origin (intercept times the product of the (1 - D beta_C)),
       // then turned about its meeting point with the current hardening line to the slope
@@ -190,16 +197,19 @@ void Bilin::setTrialStrain(double strain, double) {
     t.stress = b.stress;
     t.tangent = b.slope;
     s.lastBound = b.branch;
+    t.yielded = t.yieldedOnce = t.loadedOnBound = true;
   } else {
     t.stress = predictor;
     t.tangent = K;
     if (crossing) {
       const double thetaY = s.yield / Ke_;
-      t.tangent = sg * (s.extreme - thetaY) <= 0.0 ? Ke_ : bound(s, side, s.extreme).slope;
+      const bool insideElasticRange = sg * strain >= 0.0 && sg * (strain - thetaY) <= 0.0;
+      if (!insideElasticRange || (c.yieldedOnce && det_.lambdaS > 0.0))
+        t.tangent = sg * (s.extreme - thetaY) <= 0.0 ? Ke_ : bound(s, side, s.extreme).slope;
     }
   }
   t.work = c.work + 0.5 * (c.stress + t.stress) * step;
-  if (crossing) t.workAtCrossing = t.work;
+  if (crossing && c.yieldedOnce) t.workAtCrossing = t.work;
   t.direction = dir;
   SideState& reached = t.side[strain > 0.0 ? 0 : 1];
   if (std::fabs(strain) > std::fabs(reached.extreme)) reached.extreme = strain;

@@ -105,6 +105,9 @@ class Bilin : public UniaxialMaterial {
     double work = 0.0, workAtCrossing = 0.0;
     double refStrain = 0.0, refStress = 0.0;  // start of the current elastic line
     int direction = 0;                   // sign of the last strain increment
+    bool yielded = false;                // a step of this excursion ended on a bound
+    bool yieldedOnce = false;            // a step ever ended on a bound
+    bool loadedOnBound = false;          // a step since the last reversal ended on a bound
     std::array<SideState, 2> side{};
   };
 

@@ -197,6 +197,11 @@ def _cases():
         "Bilin-all-asymmetric": (("Bilin", 1, *bl_side, *bl_all, *bl_geo, 0.7, 0.9), bl_path),
         "Bilin-post-capping-cuts-yield": (("Bilin", 1, *bl_side, 0.0, 0.6, 0.0, 0.0, *bl_none[4:], *bl_geo, 1.0, 1.0),
                                           bl_cycles),
+        # Small elastic cycles first (zero crossings before the first yield deteriorate nothing;
+        # later elastic excursions strengthen a little, as in OpenSees).
+        "Bilin-elastic-cycles-first": (("Bilin", 1, *bl_side, 3.0, 0.0, 1.0, 4.0, *bl_none[4:], *bl_geo, 0.7, 0.9),
+                                       _history([0.005, -0.004, 0.006, -0.003, 0.007, -0.006, 0.03, -0.005, 0.004,
+                                                 -0.03, 0.05], 0.001, np.random.default_rng(3), jumps=False)),
         "Bilin-all-nFactor": (("Bilin", 1, *bl_side, *bl_all, *bl_geo, 0.7, 0.9, 3.0), bl_path),
         "Pinching4-start-negative": (("Pinching4", 1, *p4_stiff, *p4_ratios, *p4_all, 10.0, "energy"),
                                      [-e for e in p4_path]),

@@ -51,4 +51,5 @@ SCRIPTS = (
     "script_queries",
     "solid_elements",
     "solid_footing",
+    "bilin_frame_2d",
 )
