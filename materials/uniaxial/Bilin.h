@@ -22,33 +22,39 @@ namespace beamsolid {
 // between the positive bound (min of hardening and capping lines, not below the residual)
 // and the negative one.
 // Cyclic deterioration (E_t = Lamda*My_Plus, W the work done so far by the trapezoid rule,
-// W_c its value at the last zero crossing of the stress):
+// W_c its value at the last zero crossing of the stress); nothing happens before the first
+// step that ends on a bound (earlier zero crossings do not even reset W_c):
 //  - at a zero crossing of the elastic predictor the excursion's energy E_i = W - W_c (the
 //    crossing step's work taken with the predictor; W_c is then reset to W with the final
-//    stress) deteriorates the side being entered:
-//    My and as (before the n modification) by (1 - D beta_S), the post-capping line's
-//    intercept at theta = 0 by the product of the (1 - D beta_C), beta = (E_i/(E_t - W))^c.
-//    The post-capping line is then rebuilt: the original line, moved, is turned about its
-//    meeting point with the hardening line to the slope ac0 (My - Res|My0|)/(My0 - Res|My0|)
-//    (n-modified); where it meets the elastic line through the origin before the yield point,
-//    that point becomes the yield point (My itself unchanged) and the residual Res times it.
-//  - at a reversal of the strain increment, K's ratio to Ke (before the n modification)
-//    deteriorates by (1 - beta_K), beta_K = (E/(2 Lamda_K My_Plus - W_c - E))^c_K,
-//    E = W - W_c - f^2/(2K) at the reversal.
+//    stress) deteriorates the side being entered: My and as (before the n modification) by
+//    (1 - D beta_S), the post-capping line's intercept at theta = 0 by the product of the
+//    (1 - D beta_C), beta = (E_i/(E_t - W))^c (an elastic excursion can give E_i < 0 and, with
+//    c = 1, a small strengthening, as in OpenSees). The post-capping line is then rebuilt: the
+//    original line, moved, is turned about its meeting point with the hardening line to the
+//    slope ac0 (My - Res|My0|)/(My0 - Res|My0|) (n-modified); where it meets the elastic line
+//    through the origin before the yield point, that point becomes the yield point (My itself
+//    unchanged) and the residual Res times it.
+//  - at a reversal of the strain increment after a step on a bound, K's ratio to Ke (before
+//    the n modification) deteriorates by (1 - beta_K), beta_K = (E/(2 Lamda_K My_Plus - W_c -
+//    E))^c_K, E = W - W_c - f^2/(2K) at the reversal.
 // Lamda = 0 switches a mode off; Lamda_A and c_A are read and ignored (no reloading stiffness
 // in a bilinear model).
 // OpenSees' quirks reproduced: the step that enters the residual gives the (current) residual
 // + 1e-7*theta, the steps on it Res*|My0|; the step on which the stress crosses zero reports as
-// tangent the slope of the new side's bound at the largest strain reached on that side (Ke
-// before it yielded); when such a step reaches the bound with the zero-stress point beyond the
-// origin and the elastic line meets the hardening line on the bound, the stress stops there.
+// tangent K if it ends inside the new side's initial elastic range (0 to theta_y) and strength
+// did not deteriorate there, else the slope of the new side's bound at the largest strain
+// reached on that side (Ke before it yielded); when such a step reaches the bound with the
+// zero-stress point beyond the origin and the elastic line meets the hardening line on the
+// bound, the stress stops there.
 // Known differences from OpenSees (docs/commands.md, benchmarks/bilin_oracle_histories.py):
 // other steps that cross zero stress and reach the other side's bound in one step (steps of
 // two yield rotations or more), re-entering the residual (OpenSees gives one step at exactly
 // Res*|My0| with slope -1e-7, or keeps Res*|My0| + 1e-7 theta after strength deterioration),
 // a deteriorated post-capping line below the residual (OpenSees enters the residual later, or
-// fails the spring where the line reaches zero), and the energy exceeding E_t (beta is capped
-// at 1 here).
+// fails the spring where the line reaches zero), post-capping deterioration after elastic
+// excursions (small differences), c != 1 with an elastic excursion of negative energy after
+// yield (OpenSees' power is undefined and its response invalid; here the mode is left alone),
+// and the energy exceeding E_t (beta is capped at 1 here).
 class Bilin : public UniaxialMaterial {
  public:
   struct SideInput {
