@@ -57,14 +57,14 @@ sys.stdout.write("RESULT" + json.dumps(out))
 """
 
 
-def _history(amplitudes, increment, rng):
+def _history(amplitudes, increment, rng, jumps=True):
     """Cycles through the turning points, with steps of random size up to
-    `increment` and a few large jumps (several yield strains in one step)."""
+    `increment` and (with `jumps`) a few large jumps (several yield strains in one step)."""
     path, current = [], 0.0
     for target in amplitudes:
         while abs(target - current) > 1e-15:
             size = increment * (0.2 + 0.8 * rng.random())
-            if rng.random() < 0.05:
+            if jumps and rng.random() < 0.05:
                 size *= 15.0
             current = target if abs(target - current) <= size else current + np.sign(target - current) * size
             path.append(float(current))
@@ -108,6 +108,26 @@ def _cases():
     p4_ratios = (0.5, 0.25, 0.05, 0.4, 0.3, 0.1)
     p4_none = (0.0,) * 15
     p4_all = (0.3, 0.2, 1.2, 1.1, 0.9, 0.4, 0.3, 1.0, 0.9, 0.8, 0.2, 0.2, 1.1, 1.3, 0.7)
+    # Bilin (modified Ibarra-Medina-Krawinkler, bilinear): a rotational spring with an asymmetric
+    # backbone (yield 0.01 / -0.008, caps at 0.04 / -0.048, residuals 3 / -2, theta_u 0.2 / 0.25);
+    # the monotonic paths go through the residual and past theta_u, the cyclic one (small steps:
+    # see docs/commands.md for the steps OpenSees treats differently) into both capping ranges.
+    bl_path = _history([0.02, -0.015, 0.035, 0.01, 0.05, -0.03, -0.06, 0.0, 0.07, -0.02, 0.08, -0.09, 0.03], 0.002,
+                       np.random.default_rng(7), jumps=False)
+    bl_up = [0.002 * i for i in range(1, 120)]
+    bl_down = [-0.002 * i for i in range(1, 140)]
+    bl_side = (1000.0, 0.02, 0.03, 10.0, -8.0)
+    bl_none = (0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0)
+    bl_geo = (0.03, 0.04, 0.1, 0.12, 0.3, 0.25, 0.2, 0.25)
+    bl_all = (3.0, 2.5, 1.0, 4.0, 1.2, 0.9, 1.0, 1.1)
+    # Six cycles of +-0.03 in steps of 0.001, then a push to -0.3: with Lamda_C = 0.6 the
+    # post-capping line moves inside the yield point (cutting the yield point and residual).
+    bl_cycles, current = [], 0
+    for target in [30, -30] * 6 + [0]:
+        while current != target:
+            current += 1 if target > current else -1
+            bl_cycles.append(0.001 * current)
+    bl_cycles += [-0.001 * k for k in range(1, 300)]
     out = {
         "Steel01": (("Steel01", 1, fy, E0, b), steel),
         "Steel01-iso": (("Steel01", 1, fy, E0, b, 0.04, 2.0, 0.03, 1.5), steel),
@@ -165,6 +185,24 @@ def _cases():
         "Pinching4-unequal-stiffness": (("Pinching4", 1, *p4_stiff, 0.8, 0.6, 0.3, 0.7, 0.5, -0.2, *p4_all, 5.0,
                                          "energy"), p4_path),
         "Pinching4-symmetric": (("Pinching4", 1, *p4_env[:8], 0.2, 0.1, 0.0, *p4_all, 10.0, "cycle"), p4_path),
+        "Bilin-backbone-positive": (("Bilin", 1, *bl_side, *bl_none, *bl_geo, 1.0, 1.0), bl_up),
+        "Bilin-backbone-negative": (("Bilin", 1, *bl_side, *bl_none, *bl_geo, 1.0, 1.0), bl_down),
+        "Bilin-backbone-nFactor": (("Bilin", 1, *bl_side, *bl_none, *bl_geo, 1.0, 1.0, 10.0), bl_up + bl_down),
+        "Bilin": (("Bilin", 1, *bl_side, *bl_none, *bl_geo, 1.0, 1.0), bl_path),
+        "Bilin-nFactor": (("Bilin", 1, *bl_side, *bl_none, *bl_geo, 1.0, 1.0, 5.0), bl_path),
+        "Bilin-strength": (("Bilin", 1, *bl_side, 2.0, 0.0, 0.0, 0.0, *bl_none[4:], *bl_geo, 1.0, 1.0), bl_path),
+        "Bilin-post-capping": (("Bilin", 1, *bl_side, 0.0, 2.0, 0.0, 0.0, *bl_none[4:], *bl_geo, 1.0, 1.0), bl_path),
+        "Bilin-unloading-stiffness": (("Bilin", 1, *bl_side, 0.0, 0.0, 0.0, 2.0, *bl_none[4:], *bl_geo, 1.0, 1.0),
+                                      bl_path),
+        "Bilin-all-asymmetric": (("Bilin", 1, *bl_side, *bl_all, *bl_geo, 0.7, 0.9), bl_path),
+        "Bilin-post-capping-cuts-yield": (("Bilin", 1, *bl_side, 0.0, 0.6, 0.0, 0.0, *bl_none[4:], *bl_geo, 1.0, 1.0),
+                                          bl_cycles),
+        # Small elastic cycles first (zero crossings before the first yield deteriorate nothing;
+        # later elastic excursions strengthen a little, as in OpenSees).
+        "Bilin-elastic-cycles-first": (("Bilin", 1, *bl_side, 3.0, 0.0, 1.0, 4.0, *bl_none[4:], *bl_geo, 0.7, 0.9),
+                                       _history([0.005, -0.004, 0.006, -0.003, 0.007, -0.006, 0.03, -0.005, 0.004,
+                                                 -0.03, 0.05], 0.001, np.random.default_rng(3), jumps=False)),
+        "Bilin-all-nFactor": (("Bilin", 1, *bl_side, *bl_all, *bl_geo, 0.7, 0.9, 3.0), bl_path),
         "Pinching4-start-negative": (("Pinching4", 1, *p4_stiff, *p4_ratios, *p4_all, 10.0, "energy"),
                                      [-e for e in p4_path]),
     }

@@ -58,4 +58,5 @@ SCRIPTS = (
     "beam_integrations_more",
     "generalized_alpha",
     "drift_recorders",
+    "bilin_frame_2d",
 )
