@@ -7,10 +7,7 @@
 
 namespace beamsolid {
 
-namespace {
-
-// Index of a code in the 3D order [P, Mz, My, T]; -1 for shear.
-int componentOf(SectionCode code) {
+int SectionAggregator3d::componentOf(SectionCode code) {
   switch (code) {
     case SectionCode::P: return 0;
     case SectionCode::Mz: return 1;
@@ -19,8 +16,6 @@ int componentOf(SectionCode code) {
     default: return -1;
   }
 }
-
-}  // namespace
 
 SectionAggregator3d::SectionAggregator3d(int tag, std::unique_ptr<SectionForceDeformation> section,
                                          std::array<std::unique_ptr<UniaxialMaterial>, 4> materials)
@@ -132,7 +127,7 @@ std::unique_ptr<BeamSection> buildSectionAggregator(CommandArgs& args, Domain& d
     const std::string name = args.nextString("code");
     const auto code = parseSectionCode(name);
     if (!code) args.failAt(at, "code", "one of P, Mz, My, T, got '" + name + "'");
-    const int c = componentOf(*code);
+    const int c = SectionAggregator3d::componentOf(*code);
     if (c < 0)
       args.failAt(at, "code", "one of P, Mz, My, T: shear ('" + name + "') is not supported in 3D sections");
     if (materials[c]) args.failAt(at, "code", std::string("a code not given before ('") + name + "' is given twice)");

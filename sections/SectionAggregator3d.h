@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "materials/uniaxial/UniaxialMaterial.h"
+#include "sections/SectionCode.h"
 #include "sections/SectionForceDeformation.h"
 
 namespace beamsolid {
@@ -21,6 +22,9 @@ class SectionAggregator3d : public SectionForceDeformation {
                       std::array<std::unique_ptr<UniaxialMaterial>, 4> materials);
   SectionAggregator3d(const SectionAggregator3d& other);
   SectionAggregator3d& operator=(const SectionAggregator3d&) = delete;
+
+  // Index of a code in the 3D order [P, Mz, My, T]; -1 for shear.
+  static int componentOf(SectionCode code);
 
   std::string className() const override { return "Aggregator"; }
   std::unique_ptr<SectionForceDeformation> clone() const override;

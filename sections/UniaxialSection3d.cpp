@@ -12,21 +12,10 @@ namespace beamsolid {
 
 namespace {
 
-// Index of a code in the 3D order [P, Mz, My, T]; -1 for shear.
-int componentOf(SectionCode code) {
-  switch (code) {
-    case SectionCode::P: return 0;
-    case SectionCode::Mz: return 1;
-    case SectionCode::My: return 2;
-    case SectionCode::T: return 3;
-    default: return -1;
-  }
-}
-
 std::array<std::unique_ptr<UniaxialMaterial>, 4> inComponent(std::unique_ptr<UniaxialMaterial> material,
                                                              SectionCode code) {
   std::array<std::unique_ptr<UniaxialMaterial>, 4> materials;
-  const int c = componentOf(code);
+  const int c = SectionAggregator3d::componentOf(code);
   if (c < 0) throw OpenSeesError("section Uniaxial: shear components have no 3D section here");
   materials[c] = std::move(material);
   return materials;
@@ -83,7 +72,7 @@ std::unique_ptr<BeamSection> buildUniaxialSection(CommandArgs& args, Domain& dom
   }
   if (domain.spaceDim() != 3) args.fail("Uniaxial needs a 2D or 3D model (-ndm 2 or 3)");
   if (!code) args.failAt(at, "quantity", "one of P, Mz, My, T in a 3D model, got '" + name + "'");
-  if (componentOf(*code) < 0)
+  if (SectionAggregator3d::componentOf(*code) < 0)
     args.failAt(at, "quantity", "one of P, Mz, My, T: shear ('" + name + "') is not supported in 3D sections");
   return std::make_unique<UniaxialSection3d>(tag, domain.uniaxialMaterials.get(matTag, args.context()).clone(),
                                              *code);
