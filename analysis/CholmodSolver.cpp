@@ -59,6 +59,7 @@ bool CholmodSolver::factorize(const SparseView& A) {
   cholmod_factorize(&s, factor_, common_);
   ++numFactorize_;
   failedEquation_ = -1;
+  factorized_ = false;
   if (common_->status == CHOLMOD_NOT_POSDEF) {
     const auto minor = static_cast<int>(factor_->minor);
     const int* perm = static_cast<const int*>(factor_->Perm);
@@ -70,6 +71,7 @@ bool CholmodSolver::factorize(const SparseView& A) {
     lastError_ = "factorization failed (CHOLMOD status " + std::to_string(common_->status) + ")";
     return false;
   }
+  factorized_ = true;
   return true;
 }
 

@@ -30,6 +30,8 @@ class LinearSolver {
   // False on a singular (or, for SPD solvers, indefinite) matrix; lastError() says why.
   virtual bool factorize(const SparseView& A) = 0;
   virtual void solve(const double* b, double* x) = 0;
+  // Sign of the determinant of the last factorized matrix: +1, -1, or 0 where the backend cannot tell.
+  virtual int determinantSign() const { return 0; }
 
   // Counters for benchmarks and tests: how often each phase ran.
   int numAnalyze() const { return numAnalyze_; }

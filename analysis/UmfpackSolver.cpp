@@ -47,6 +47,13 @@ void UmfpackSolver::analyze(const SparseView& A) {
   ++numAnalyze_;
 }
 
+int UmfpackSolver::determinantSign() const {
+  if (!numeric_) return 0;
+  double mantissa = 0.0, exponent = 0.0;
+  if (umfpack_di_get_determinant(&mantissa, &exponent, numeric_, nullptr) < 0) return 0;
+  return mantissa > 0.0 ? 1 : (mantissa < 0.0 ? -1 : 0);
+}
+
 bool UmfpackSolver::factorize(const SparseView& A) {
   A_ = A;
   if (A.n == 0) return true;

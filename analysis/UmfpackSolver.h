@@ -13,6 +13,7 @@ class UmfpackSolver : public LinearSolver {
   bool requiresSPD() const override { return false; }
   void analyze(const SparseView& A) override;
   bool factorize(const SparseView& A) override;
+  int determinantSign() const override;
   void solve(const double* b, double* x) override;
 
  private:

@@ -99,7 +99,7 @@ CASES = [
     ("nodeEigenvector mode", "nodeEigenvector", (2, 1), ["mode 1 is not available"]),
     ("nodeReaction type", "nodeReaction", ("2",), ["nodeReaction", "expected an integer, got '2'"]),
     ("recorder node", "recorder", ("Node", "-file", "/dev/null", "-node", 99, "-dof", 1, "disp"), ["recorder Node", "99"]),
-    ("recorder response", "recorder", ("Element", "-file", "/dev/null", "-ele", 1, "noSuch"), ["recorder Element", "noSuch"]),
+    ("recorder element", "recorder", ("Element", "-file", "/dev/null", "-ele", 99, "force"), ["recorder Element", "element 99"]),
     ("setParameter none", "setParameter", ("-val", 1.0, "-ele", 1, "friction"), ["setParameter", "no element recognizes parameter 'friction'"]),
     ("updateMaterialStage", "updateMaterialStage", ("-material", 9, "-stage", 1), ["nDMaterial 9 does not exist"]),
     ("region element", "region", (1, "-ele", 99, "-rayleigh", 0.1, 0.0, 0.0, 0.0), ["region 1: element 99 does not exist"]),

@@ -59,4 +59,5 @@ SCRIPTS = (
     "generalized_alpha",
     "drift_recorders",
     "bilin_frame_2d",
+    "min_unbal_disp_norm",
 )
