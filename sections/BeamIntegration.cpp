@@ -164,6 +164,8 @@ const char* BeamIntegration::ruleName(Rule rule) {
     case Rule::UserDefined: return "UserDefined";
     case Rule::FixedLocation: return "FixedLocation";
     case Rule::MidDistance: return "MidDistance";
+    case Rule::HingeMidpoint: return "HingeMidpoint";
+    case Rule::HingeEndpoint: return "HingeEndpoint";
   }
   return "?";
 }
@@ -176,6 +178,8 @@ int BeamIntegration::minPoints(Rule rule) {
     case Rule::CompositeSimpson: return 3;
     case Rule::HingeRadau:
     case Rule::HingeRadauTwo: return 6;
+    case Rule::HingeMidpoint:
+    case Rule::HingeEndpoint: return 4;
     default: return 1;
   }
 }
@@ -186,6 +190,8 @@ int BeamIntegration::maxPoints(Rule rule) {
     case Rule::NewtonCotes: return 12;
     case Rule::HingeRadau:
     case Rule::HingeRadauTwo: return 6;
+    case Rule::HingeMidpoint:
+    case Rule::HingeEndpoint: return 4;
     // FixedLocation's Vandermonde system is ill-conditioned beyond this.
     case Rule::FixedLocation: return 12;
     default: return 30;
@@ -195,7 +201,7 @@ int BeamIntegration::maxPoints(Rule rule) {
 BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags)
     : tag_(tag), rule_(rule), sectionTags_(std::move(sectionTags)) {
   const int n = numPoints();
-  if (rule == Rule::HingeRadau || rule == Rule::HingeRadauTwo)
+  if (isHinge(rule))
     throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
                         ": a hinge rule needs secI, lpI, secJ, lpJ, secE");
   if (rule == Rule::UserDefined || rule == Rule::FixedLocation || rule == Rule::MidDistance)
@@ -244,7 +250,7 @@ BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTag
 }
 
 BeamIntegration::BeamIntegration(int tag, Rule rule, const Hinges& hinges) : tag_(tag), rule_(rule), hinges_(hinges) {
-  if (rule != Rule::HingeRadau && rule != Rule::HingeRadauTwo)
+  if (!isHinge(rule))
     throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
                         ": not a hinge rule");
   // HingeRadau (Scott and Fenves 2006, modified Radau over 4 lp): only the
@@ -254,6 +260,8 @@ BeamIntegration::BeamIntegration(int tag, Rule rule, const Hinges& hinges) : tag
   if (rule == Rule::HingeRadau)
     sectionTags_ = {hinges.sectionI, hinges.sectionInterior, hinges.sectionInterior,
                     hinges.sectionInterior, hinges.sectionInterior, hinges.sectionJ};
+  else if (rule == Rule::HingeMidpoint || rule == Rule::HingeEndpoint)
+    sectionTags_ = {hinges.sectionI, hinges.sectionInterior, hinges.sectionInterior, hinges.sectionJ};
   else
     sectionTags_ = {hinges.sectionI, hinges.sectionI, hinges.sectionInterior,
                     hinges.sectionInterior, hinges.sectionJ, hinges.sectionJ};
@@ -275,10 +283,14 @@ void BeamIntegration::pointsAndWeights(double length, std::vector<double>& xi, s
       weights = givenWeights_;
       return;
     case Rule::HingeRadau:
-    case Rule::HingeRadauTwo: break;
+    case Rule::HingeRadauTwo:
+    case Rule::HingeMidpoint:
+    case Rule::HingeEndpoint: break;
   }
-  // Hinge regions of length span*lp at each end, two-point Radau in each
-  // (end point weight 1/4, interior point at 2/3 with weight 3/4 of the span).
+  // Hinge regions of length span*lp at each end: two-point Radau in each
+  // (end point weight 1/4, interior point at 2/3 with weight 3/4 of the span)
+  // or one point (the middle or the end) weighted lp.
+  const bool onePoint = rule_ == Rule::HingeMidpoint || rule_ == Rule::HingeEndpoint;
   const double span = rule_ == Rule::HingeRadau ? 4.0 : 1.0;
   const double a = span * hinges_.lengthI / length;
   const double b = span * hinges_.lengthJ / length;
@@ -289,6 +301,13 @@ void BeamIntegration::pointsAndWeights(double length, std::vector<double>& xi, s
                         std::to_string(length) + ")");
   const double interior = std::max(0.0, 1.0 - a - b);
   const double gauss = 0.5 / std::sqrt(3.0);
+  if (onePoint) {
+    const bool middle = rule_ == Rule::HingeMidpoint;
+    xi = {middle ? 0.5 * a : 0.0, a + (0.5 - gauss) * interior, a + (0.5 + gauss) * interior,
+          middle ? 1.0 - 0.5 * b : 1.0};
+    weights = {a, 0.5 * interior, 0.5 * interior, b};
+    return;
+  }
   xi = {0.0, 2.0 / 3.0 * a, a + (0.5 - gauss) * interior, a + (0.5 + gauss) * interior, 1.0 - 2.0 / 3.0 * b, 1.0};
   weights = {0.25 * a, 0.75 * a, 0.5 * interior, 0.5 * interior, 0.75 * b, 0.25 * b};
 }
@@ -299,7 +318,7 @@ std::unique_ptr<BeamIntegration> buildRule(CommandArgs& args, Domain& domain, Be
   const char* name = BeamIntegration::ruleName(rule);
   const int tag = args.nextInt("tag");
   args.setContext(std::string("beamIntegration ") + name + " " + std::to_string(tag));
-  if (rule == BeamIntegration::Rule::HingeRadau || rule == BeamIntegration::Rule::HingeRadauTwo) {
+  if (BeamIntegration::isHinge(rule)) {
     BeamIntegration::Hinges h;
     h.sectionI = args.nextInt("secI");
     std::size_t at = args.position();
@@ -372,7 +391,7 @@ void registerBeamIntegrations(Registry& r) {
   using Rule = BeamIntegration::Rule;
   for (Rule rule : {Rule::Lobatto, Rule::Legendre, Rule::Radau, Rule::NewtonCotes, Rule::HingeRadau,
                     Rule::HingeRadauTwo, Rule::Trapezoidal, Rule::CompositeSimpson, Rule::UserDefined,
-                    Rule::FixedLocation, Rule::MidDistance})
+                    Rule::FixedLocation, Rule::MidDistance, Rule::HingeMidpoint, Rule::HingeEndpoint})
     r.beamIntegrations.add(BeamIntegration::ruleName(rule),
                            [rule](CommandArgs& args, Domain& domain) { return buildRule(args, domain, rule); });
 }

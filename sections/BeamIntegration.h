@@ -19,6 +19,8 @@ namespace beamsolid {
 //                    (weight 3 lp, section secE): the hinge is lp long
 //   'HingeRadauTwo'  two-point Radau over lp: the end (lp/4) and 2/3 lp (3lp/4),
 //                    both the hinge section
+//   'HingeMidpoint'  one point at the middle of each hinge (lp/2, weight lp)
+//   'HingeEndpoint'  one point at each end (weight lp)
 // with two Gauss points of section secE on the interior.
 // Rules with given points, (rule, tag, N, *secTags, *locs <, *wts>):
 //   'UserDefined'    the given locations and weights
@@ -33,8 +35,14 @@ class BeamIntegration {
  public:
   enum class Rule {
     Lobatto, Legendre, Radau, NewtonCotes, HingeRadau, HingeRadauTwo,
-    Trapezoidal, CompositeSimpson, UserDefined, FixedLocation, MidDistance
+    Trapezoidal, CompositeSimpson, UserDefined, FixedLocation, MidDistance,
+    HingeMidpoint, HingeEndpoint
   };
+  // The plastic hinge rules, built from (secI, lpI, secJ, lpJ, secE).
+  static bool isHinge(Rule rule) {
+    return rule == Rule::HingeRadau || rule == Rule::HingeRadauTwo || rule == Rule::HingeMidpoint ||
+           rule == Rule::HingeEndpoint;
+  }
   struct Hinges {
     int sectionI = 0;
     double lengthI = 0.0;
@@ -49,7 +57,7 @@ class BeamIntegration {
   // `weights` only for UserDefined. Throws OpenSeesError for bad input.
   BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags, std::vector<double> locations,
                   std::vector<double> weights);
-  // A hinge rule (HingeRadau, HingeRadauTwo).
+  // A hinge rule (HingeRadau, HingeRadauTwo, HingeMidpoint, HingeEndpoint).
   BeamIntegration(int tag, Rule rule, const Hinges& hinges);
 
   int tag() const { return tag_; }

@@ -1,5 +1,5 @@
 """The beamIntegration rules UserDefined, FixedLocation, MidDistance,
-Trapezoidal and CompositeSimpson: their points and weights from the
+Trapezoidal, CompositeSimpson, HingeMidpoint and HingeEndpoint: their points and weights from the
 documented formulas, and an elastic forceBeamColumn cantilever whose tip
 flexibility is the rule's sum of (L - x_i)^2 w_i L / EI (exactly L^3/(3 EI)
 for rules exact for quadratics: FixedLocation with 3 or more points,
@@ -11,6 +11,7 @@ import beamsolid
 
 L, E, A, I = 3.0, 2.0e5, 0.05, 4.0e-4
 P = 10.0
+G = 0.5 / 3**0.5  # two-point Gauss offset from the middle, as a fraction of the interval
 
 
 def cantilever(m, rule, *args):
@@ -59,6 +60,12 @@ CASES = [
     ("Trapezoidal", (3, 1, 2, 1), [0, 0.5, 1], [0.25, 0.5, 0.25], [1, 2, 1]),
     ("CompositeSimpson", (1, 5), [0, 0.25, 0.5, 0.75, 1], [1 / 12, 1 / 3, 1 / 6, 1 / 3, 1 / 12], [1] * 5),
     ("CompositeSimpson", (3, 1, 2, 1), [0, 0.5, 1], [1 / 6, 2 / 3, 1 / 6], [1, 2, 1]),
+    # Hinges lpI = 0.3 (a = 0.1 of L), lpJ = 0.6 (b = 0.2) of section 1, two Gauss points of section 2
+    # on the interior 0.7 L; the hinge point at the hinge's middle or at the end, weighted lp.
+    ("HingeMidpoint", (1, 0.3, 1, 0.6, 2), [0.05, 0.1 + 0.7 * (0.5 - G), 0.1 + 0.7 * (0.5 + G), 0.9],
+     [0.1, 0.35, 0.35, 0.2], [1, 2, 2, 1]),
+    ("HingeEndpoint", (1, 0.3, 1, 0.6, 2), [0.0, 0.1 + 0.7 * (0.5 - G), 0.1 + 0.7 * (0.5 + G), 1.0],
+     [0.1, 0.35, 0.35, 0.2], [1, 2, 2, 1]),
 ]
 
 

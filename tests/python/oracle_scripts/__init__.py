@@ -60,4 +60,5 @@ SCRIPTS = (
     "drift_recorders",
     "bilin_frame_2d",
     "min_unbal_disp_norm",
+    "hinge_integrations",
 )
