@@ -1,7 +1,6 @@
 #include "analysis/ArcLength.h"
 
 #include <cmath>
-#include <iostream>
 #include <memory>
 
 #include "core/Domain.h"
@@ -17,25 +16,6 @@ void ArcLength::domainChanged(AnalysisModel& model) {
   hasPrevious_ = false;
   stepDisp_ = Vector::Zero(model.numEquations());
   stepLambda_ = 0.0;
-}
-
-int ArcLength::fail(const std::string& why) {
-  lastError_ = why;
-  std::cerr << "WARNING integrator ArcLength: " << why << "\n";
-  return -1;
-}
-
-bool ArcLength::referenceDisplacement(AnalysisModel& model) {
-  model.formReferenceLoad(referenceLoad_);
-  model.system().solve(referenceLoad_, referenceDisp_);
-  return referenceDisp_.allFinite();
-}
-
-void ArcLength::applyLoadIncrement(AnalysisModel& model, double dLambda, const Vector& dU) {
-  Domain& domain = model.domain();
-  domain.applyLoad(domain.currentTime() + dLambda);
-  model.enforcePrescribed();
-  model.applyIncrement(dU);  // updates the elements
 }
 
 int ArcLength::newStep(AnalysisModel& model) {

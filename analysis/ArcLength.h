@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "analysis/Integrator.h"
+#include "analysis/PathFollowingIntegrator.h"
 
 namespace beamsolid {
 
@@ -15,7 +15,7 @@ namespace beamsolid {
 // the previous one. The predictor keeps the direction of the last converged
 // step; the first one goes along +P_ref when P_ref.K^-1 P_ref > 0 (stable
 // start) and against it otherwise.
-class ArcLength : public Integrator {
+class ArcLength : public PathFollowingIntegrator {
  public:
   ArcLength(double arcLength, double alpha);
   std::string name() const override { return "ArcLength"; }
@@ -28,15 +28,9 @@ class ArcLength : public Integrator {
   double arcLength() const { return arcLength_; }
   // Roots were complex in an iteration of the last step (closest point taken).
   int complexRootIterations() const { return complexRoots_; }
-  const std::string& lastError() const { return lastError_; }
 
  private:
-  bool referenceDisplacement(AnalysisModel& model);
-  void applyLoadIncrement(AnalysisModel& model, double dLambda, const Vector& dU);
-  int fail(const std::string& why);
-
   double arcLength_, alpha2_;
-  Vector referenceLoad_, referenceDisp_;
   // Increments of the current step and of the last converged one.
   Vector stepDisp_;
   double stepLambda_ = 0.0;
@@ -44,7 +38,6 @@ class ArcLength : public Integrator {
   double previousLambda_ = 0.0;
   bool hasPrevious_ = false;
   int complexRoots_ = 0;
-  std::string lastError_;
 };
 
 }  // namespace beamsolid

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <memory>
 
 #include "core/Domain.h"
@@ -43,24 +42,10 @@ double DisplacementControl::controlled(const Vector& v) const {
 
 void DisplacementControl::domainChanged(AnalysisModel& model) { resolve(model); }
 
-int DisplacementControl::fail(const std::string& why) {
-  lastError_ = why;
-  std::cerr << "WARNING integrator DisplacementControl: " << why << "\n";
-  return -1;
-}
-
-bool DisplacementControl::referenceDisplacement(AnalysisModel& model) {
-  model.formReferenceLoad(referenceLoad_);
-  model.system().solve(referenceLoad_, referenceDisp_);
+bool DisplacementControl::movesControlledDof(AnalysisModel& model) {
+  referenceDisplacement(model);  // only the controlled component has to be usable here
   const double ep = controlled(referenceDisp_);
   return std::isfinite(ep) && ep != 0.0;
-}
-
-void DisplacementControl::applyLoadIncrement(AnalysisModel& model, double dLambda, const Vector& dU) {
-  Domain& domain = model.domain();
-  domain.applyLoad(domain.currentTime() + dLambda);
-  model.enforcePrescribed();
-  model.applyIncrement(dU);  // updates the elements
 }
 
 int DisplacementControl::newStep(AnalysisModel& model) {
@@ -80,7 +65,7 @@ int DisplacementControl::newStep(AnalysisModel& model) {
   model.formTangent(AnalysisModel::Stiffness::Current);
   if (!model.factor(AnalysisModel::Stiffness::Current))
     return fail("the tangent is singular at the start of the step: " + model.describeFactorFailure());
-  if (!referenceDisplacement(model))
+  if (!movesControlledDof(model))
     return fail("the reference load does not move node " + std::to_string(nodeTag_) + " dof " +
                 std::to_string(dof_ + 1));
   const Node& node = model.domain().node(nodeTag_, "integrator DisplacementControl");
@@ -95,7 +80,7 @@ int DisplacementControl::update(AnalysisModel& model, const Vector& dU) {
   LinearSystem& system = model.system();
   if (!system.isFactored()) return fail("update without a factored tangent");
   const Vector residualDisp = dU;  // dU may alias system.x(), rewritten below
-  if (!referenceDisplacement(model))
+  if (!movesControlledDof(model))
     return fail("the reference load no longer moves node " + std::to_string(nodeTag_) + " dof " +
                 std::to_string(dof_ + 1) + " (singular constraint)");
   const Node& node = model.domain().node(nodeTag_, "integrator DisplacementControl");

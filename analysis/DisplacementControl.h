@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "analysis/DofMap.h"
-#include "analysis/Integrator.h"
+#include "analysis/PathFollowingIntegrator.h"
 
 namespace beamsolid {
 
@@ -15,7 +15,7 @@ namespace beamsolid {
 //   dLambda = (target - u_c - e.dU_r) / e.dU_p,  dU = dU_r + dLambda dU_p.
 // The increment adapts by numIter / (iterations of the last step) within
 // [dUmin, dUmax] (in magnitude, keeping its sign).
-class DisplacementControl : public Integrator {
+class DisplacementControl : public PathFollowingIntegrator {
  public:
   // dof is 0-based here.
   DisplacementControl(int nodeTag, int dof, double increment, int desiredIterations, double minIncrement,
@@ -28,17 +28,13 @@ class DisplacementControl : public Integrator {
   void revert(AnalysisModel& model) override;
 
   double increment() const { return increment_; }
-  // Why the last newStep/update failed (empty if it did not).
-  const std::string& lastError() const { return lastError_; }
 
  private:
   // The controlled dof as a combination of equations (checks node and dof).
   void resolve(AnalysisModel& model);
   double controlled(const Vector& v) const;
-  // dU_p = K^-1 P_ref with the current factorization; false if unusable.
-  bool referenceDisplacement(AnalysisModel& model);
-  void applyLoadIncrement(AnalysisModel& model, double dLambda, const Vector& dU);
-  int fail(const std::string& why);
+  // dU_p = K^-1 P_ref with the current factorization; false if it does not move the controlled dof.
+  bool movesControlledDof(AnalysisModel& model);
 
   int nodeTag_, dof_;
   double increment_;
@@ -47,8 +43,6 @@ class DisplacementControl : public Integrator {
   int lastIterations_ = 0;
   std::vector<DofMap::Term> control_;
   double target_ = 0.0;  // value of the controlled dof at the end of this step
-  Vector referenceLoad_, referenceDisp_;
-  std::string lastError_;
 };
 
 }  // namespace beamsolid

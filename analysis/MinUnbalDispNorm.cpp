@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <memory>
 
 #include "core/Domain.h"
@@ -19,25 +18,8 @@ MinUnbalDispNorm::MinUnbalDispNorm(double dLambda1, int desiredIterations, doubl
       maxLambda_(std::max(minLambda, maxLambda)),
       byDeterminant_(byDeterminant) {}
 
-int MinUnbalDispNorm::fail(const std::string& why) {
-  std::cerr << "WARNING integrator MinUnbalDispNorm: " << why << "\n";
-  return -1;
-}
-
-bool MinUnbalDispNorm::referenceDisplacement(AnalysisModel& model) {
-  model.formReferenceLoad(referenceLoad_);
-  model.system().solve(referenceLoad_, referenceDisp_);
-  return referenceDisp_.allFinite();
-}
-
-void MinUnbalDispNorm::applyLoadIncrement(AnalysisModel& model, double dLambda, const Vector& dU) {
-  Domain& domain = model.domain();
-  domain.applyLoad(domain.currentTime() + dLambda);
-  model.enforcePrescribed();
-  model.applyIncrement(dU);
-}
-
 int MinUnbalDispNorm::newStep(AnalysisModel& model) {
+  lastError_.clear();
   model.formTangent(AnalysisModel::Stiffness::Current);
   if (!model.factor(AnalysisModel::Stiffness::Current))
     return fail("the tangent is singular at the start of the step: " + model.describeFactorFailure());

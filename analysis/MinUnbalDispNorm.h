@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "analysis/Integrator.h"
+#include "analysis/PathFollowingIntegrator.h"
 
 namespace beamsolid {
 
@@ -15,7 +15,7 @@ namespace beamsolid {
 // dLambda dU_p point along the last step's displacement increment, which
 // carries the path past limit points. (OpenSees' '-det'
 // sign rule, by the stiffness determinant, is not available.)
-class MinUnbalDispNorm : public Integrator {
+class MinUnbalDispNorm : public PathFollowingIntegrator {
  public:
   MinUnbalDispNorm(double dLambda1, int desiredIterations, double minLambda, double maxLambda, bool byDeterminant);
   std::string name() const override { return "MinUnbalDispNorm"; }
@@ -25,10 +25,6 @@ class MinUnbalDispNorm : public Integrator {
   void revert(AnalysisModel& model) override;
 
  private:
-  bool referenceDisplacement(AnalysisModel& model);
-  void applyLoadIncrement(AnalysisModel& model, double dLambda, const Vector& dU);
-  int fail(const std::string& why);
-
   double dLambda1_;
   int desiredIterations_;
   double minLambda_, maxLambda_;
@@ -37,7 +33,6 @@ class MinUnbalDispNorm : public Integrator {
   double sign_ = 1.0;
   int lastDeterminantSign_ = 0;
   double stepLambda_ = 0.0, previousStepLambda_ = 0.0;
-  Vector referenceLoad_, referenceDisp_;
 };
 
 }  // namespace beamsolid
