@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 
+#include "materials/uniaxial/ImkBackbone.h"
 #include "materials/uniaxial/UniaxialMaterial.h"
 
 namespace beamsolid {
@@ -12,10 +13,7 @@ namespace beamsolid {
 // (Ibarra, Medina & Krawinkler 2005; Lignos & Krawinkler 2011). The rules below were found by
 // driving OpenSeesPy 3.7.1 as a black box (tests/python/test_uniaxial_oracle.py).
 //
-// Backbone per side (n = nFactor, Ke = (1+n) K0, and any ratio r below enters as
-// r' = r/(1+n(1-r))): elastic to theta_y = My/Ke, the hardening line of slope as'*Ke to the
-// cap at theta_y + theta_p (moment Mc), the post-capping line of slope ac'*Ke
-// (ac = -Mc/(theta_pc*K0)) down to the residual Res*|My|, whose slope is reported as 1e-7.
+// Backbone per side: ImkBackbone (n = nFactor, Ke = (1+n) K0).
 // While |theta| >= theta_u the stress is +-1e-10 (sign of the step), tangent 1e-7; back
 // inside, the spring goes on from there. The lines are fixed in the plane (kinematic, as
 // Steel01): the stress moves along the elastic line (slope K, from the last reversal)
@@ -57,12 +55,8 @@ namespace beamsolid {
 // and the energy exceeding E_t (beta is capped at 1 here).
 class Bilin : public UniaxialMaterial {
  public:
-  struct SideInput {
-    double as, My, thetaP, thetaPc, res, thetaU, D;  // My signed (negative side negative)
-  };
-  struct DeteriorationInput {
-    double lambdaS, lambdaC, lambdaA, lambdaK, cS, cC, cA, cK;
-  };
+  using SideInput = ImkBackbone::SideInput;
+  using DeteriorationInput = ImkBackbone::DeteriorationInput;
   Bilin(int tag, double K0, const SideInput& positive, const SideInput& negative, const DeteriorationInput& det,
         double nFactor);
 
@@ -73,7 +67,7 @@ class Bilin : public UniaxialMaterial {
   double strain() const override { return trial_.strain; }
   double stress() const override { return trial_.stress; }
   double tangent() const override { return trial_.tangent; }
-  double initialTangent() const override { return Ke_; }
+  double initialTangent() const override { return backbone_.Ke(); }
 
   void commitState() override { committed_ = trial_; }
   void revertToLastCommit() override { trial_ = committed_; }
@@ -83,26 +77,16 @@ class Bilin : public UniaxialMaterial {
 
   // Backbone corner points of the undeteriorated model (for tests): yield, cap, start of the
   // residual (strain, stress), side 0 positive, 1 negative.
-  struct Corner {
-    double strain, stress;
-  };
-  std::array<Corner, 3> backbone(int side) const;
+  using Corner = ImkBackbone::Corner;
+  std::array<Corner, 3> backbone(int side) const { return backbone_.corners(side); }
 
  private:
-  enum Branch { kElastic = 0, kHardening, kCapping, kResidual };
-  struct Bound {
-    double stress, slope;
-    Branch branch;
-  };
+  using Branch = ImkBackbone::Branch;
+  using Bound = ImkBackbone::Bound;
   // The deteriorating lines of one side.
-  struct SideState {
-    double My = 0.0, yield = 0.0;  // My (deteriorated) and the yield point the bound uses
-    double residual = 0.0;
-    double hardening = 0.0, capIntercept = 0.0, capSlope = 0.0;
-    double capFactor = 1.0;  // product of the (1 - D beta_C)
-    double as = 0.0, ac = 0.0;  // hardening and post-capping ratios before the nFactor modification
+  struct SideState : ImkBackbone::Lines {
     double extreme = 0.0;         // largest |strain| reached on this side of zero
-    Branch lastBound = kElastic;  // the bound branch the last step on it ended on
+    Branch lastBound = ImkBackbone::kElastic;  // the bound branch the last step on it ended on
   };
   struct State {
     double strain = 0.0, stress = 0.0, tangent = 0.0;
@@ -117,18 +101,11 @@ class Bilin : public UniaxialMaterial {
     std::array<SideState, 2> side{};
   };
 
-  Bound bound(const SideState& s, int side, double strain) const;
-  double beta(double energy, double capacity, double c) const;
-
-  double K0_, Ke_;
+  ImkBackbone backbone_;
   DeteriorationInput det_;
-  double energyCapacity_;                  // Lamda = 1 times My_Plus
-  std::array<double, 2> sign_{1.0, -1.0};
-  std::array<double, 2> residual_{}, thetaU_{}, D_{};
+  double energyCapacity_;  // Lamda = 1 times My_Plus
   std::array<SideState, 2> initial_{};
   State trial_, committed_;
-  double nFactor_;
-  std::array<SideInput, 2> input_;
 };
 
 }  // namespace beamsolid
