@@ -49,7 +49,7 @@ ModIMKPeakOriented::Candidate ModIMKPeakOriented::reloading(const SideState& s, 
   bool aimsAtTurn = false;
   if (s.turned && sg * s.turn.strain < sg * s.peak && sg * s.turn.strain > sg * s.zero) {
     const double line = peak.stress * (s.turn.strain - s.zero) / (s.peak - s.zero);
-    aimsAtTurn = sg * s.turn.stress > sg * line;
+    aimsAtTurn = sg * s.turn.stress > sg * line && sg * s.turn.stress <= sg * peak.stress;
   }
   if (aimsAtTurn) {
     if (sg * strain < sg * s.turn.strain)
@@ -81,7 +81,7 @@ void ModIMKPeakOriented::deteriorate(SideState& s, int side, double energy, doub
   const double sg = backbone_.sign(side);
   if (det_.lambdaA > 0.0 && sg * s.peak > sg * backbone_.initial(side).My / backbone_.Ke()) {
     const double b = ImkBackbone::beta(energy, det_.lambdaA * energyCapacity_ - work, det_.cA);
-    s.peak *= 1.0 + D * b;
+    s.peak *= 1.0 + b;
   }
 }
 
