@@ -97,10 +97,11 @@ void ModIMKPeakOriented::setTrialStrain(double strain, double) {
   const int side = step > 0.0 ? 0 : 1;
   const double sg = backbone_.sign(side);
 
-  // Beyond theta_u the spring fails for good: one step of +-1e-10, then nothing.
+  // Beyond theta_u the spring fails for good: one step of +1e-10 (on either side, as
+  // OpenSees), then nothing.
   if (c.failed || strain >= backbone_.input(0).thetaU || strain <= -backbone_.input(1).thetaU) {
     t.failed = true;
-    t.stress = c.failed ? 0.0 : dir * ImkBackbone::kFailedStress;
+    t.stress = c.failed ? 0.0 : ImkBackbone::kFailedStress;
     t.tangent = c.failed ? 0.0 : ImkBackbone::kResidualSlope;
     t.direction = dir;
     return;

@@ -31,7 +31,8 @@ namespace beamsolid {
 // E = W - W_c - f^2/(2K). Lamda = 0 switches a mode off. Lamda_A and c_A are read; OpenSees
 // shows no effect of them (docs/commands.md).
 // On the residual the stress is Res*|My0| + 1e-7 theta (slope 1e-7, as OpenSees). The first
-// step beyond theta_u gives +-1e-10 (slope 1e-7); from then on the spring carries nothing.
+// step beyond theta_u gives +1e-10 on either side (slope 1e-7); from then on the spring
+// carries nothing.
 class ModIMKPeakOriented : public UniaxialMaterial {
  public:
   using SideInput = ImkBackbone::SideInput;

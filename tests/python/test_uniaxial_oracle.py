@@ -128,6 +128,19 @@ def _cases():
             current += 1 if target > current else -1
             bl_cycles.append(0.001 * current)
     bl_cycles += [-0.001 * k for k in range(1, 300)]
+    # ModIMKPeakOriented on the Bilin spring's backbone: monotonic paths through the residual and
+    # past theta_u, the cyclic path into both capping ranges, a path into both residuals with
+    # jumps (steps of up to 15 times 0.002), and small elastic cycles before the first yield.
+    # "No deterioration" uses Lamda_C = 1e12, not 0 (OpenSeesPy's Lamda_C = 0 collapses the
+    # spring at the first zero crossing: docs/commands.md); Lamda_A is 0 throughout (its small
+    # differences are listed there too).
+    pk_none = (0.0, 1e12, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0)
+    pk_all = (3.0, 2.5, 0.0, 4.0, 1.2, 0.9, 1.0, 1.1)
+    pk_residual = _history([0.02, -0.03, 0.05, -0.01, 0.03, -0.07, 0.06, -0.09, 0.12, -0.13, 0.15, -0.2, 0.3],
+                           0.002, np.random.default_rng(2))
+    pk_elastic_first = _history([0.005, -0.004, 0.006, -0.003, 0.007, -0.006, 0.03, -0.005, 0.004, -0.03, 0.05],
+                                0.001, np.random.default_rng(3), jumps=False)
+    imk = "ModIMKPeakOriented"
     out = {
         "Steel01": (("Steel01", 1, fy, E0, b), steel),
         "Steel01-iso": (("Steel01", 1, fy, E0, b, 0.04, 2.0, 0.03, 1.5), steel),
@@ -203,6 +216,19 @@ def _cases():
                                        _history([0.005, -0.004, 0.006, -0.003, 0.007, -0.006, 0.03, -0.005, 0.004,
                                                  -0.03, 0.05], 0.001, np.random.default_rng(3), jumps=False)),
         "Bilin-all-nFactor": (("Bilin", 1, *bl_side, *bl_all, *bl_geo, 0.7, 0.9, 3.0), bl_path),
+        "ModIMKPeakOriented-backbone-positive": ((imk, 1, *bl_side, *bl_none, *bl_geo, 1.0, 1.0), bl_up),
+        "ModIMKPeakOriented-backbone-negative": ((imk, 1, *bl_side, *bl_none, *bl_geo, 1.0, 1.0), bl_down),
+        "ModIMKPeakOriented": ((imk, 1, *bl_side, *pk_none, *bl_geo, 1.0, 1.0), bl_path),
+        "ModIMKPeakOriented-strength": ((imk, 1, *bl_side, 2.0, 1e12, 0.0, 0.0, *pk_none[4:], *bl_geo, 1.0, 1.0),
+                                        bl_path),
+        "ModIMKPeakOriented-post-capping": ((imk, 1, *bl_side, 0.0, 2.0, 0.0, 0.0, *pk_none[4:], *bl_geo, 1.0, 1.0),
+                                            bl_path),
+        "ModIMKPeakOriented-unloading-stiffness": ((imk, 1, *bl_side, 0.0, 1e12, 0.0, 2.0, *pk_none[4:], *bl_geo, 1.0,
+                                                   1.0), bl_path),
+        "ModIMKPeakOriented-all-asymmetric": ((imk, 1, *bl_side, *pk_all, *bl_geo, 0.7, 0.9), bl_path),
+        "ModIMKPeakOriented-residual-jumps": ((imk, 1, *bl_side, *pk_all, *bl_geo, 0.7, 0.9), pk_residual),
+        "ModIMKPeakOriented-elastic-cycles-first": ((imk, 1, *bl_side, 3.0, 2.5, 0.0, 4.0, 1.0, 0.9, 1.0, 1.0,
+                                                    *bl_geo, 0.7, 0.9), pk_elastic_first),
         "Pinching4-start-negative": (("Pinching4", 1, *p4_stiff, *p4_ratios, *p4_all, 10.0, "energy"),
                                      [-e for e in p4_path]),
     }
