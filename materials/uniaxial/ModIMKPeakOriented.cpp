@@ -11,8 +11,12 @@
 namespace beamsolid {
 
 ModIMKPeakOriented::ModIMKPeakOriented(int tag, double K0, const SideInput& positive, const SideInput& negative,
-                                       const DeteriorationInput& det)
-    : UniaxialMaterial(tag), backbone_(K0, 0.0, positive, negative), det_(det), energyCapacity_(positive.My) {
+                                       const DeteriorationInput& det, std::optional<Pinching> pinching)
+    : UniaxialMaterial(tag),
+      backbone_(K0, 0.0, positive, negative),
+      det_(det),
+      energyCapacity_(positive.My),
+      pinching_(pinching) {
   revertToStart();
 }
 
@@ -38,24 +42,42 @@ ImkBackbone::Bound ModIMKPeakOriented::backboneAt(const SideState& s, int side, 
   return b;
 }
 
-ModIMKPeakOriented::Candidate ModIMKPeakOriented::reloading(const SideState& s, int side, double strain) const {
+ModIMKPeakOriented::Candidate ModIMKPeakOriented::reloading(const SideState& s, int side, double strain,
+                                                              double K) const {
   const double sg = backbone_.sign(side);
   const ImkBackbone::Bound b = backboneAt(s, side, strain);
   if (sg * strain > sg * s.peak) return {b.stress, b.slope, true};
   const Point peak{s.peak, backboneAt(s, side, s.peak).stress};
   Point from{s.zero, 0.0}, to = peak;
-  // When the side last turned back from a point outside the line to the peak, reloading aims
-  // there first (decided step by step: the peak moves with deterioration).
-  bool aimsAtTurn = false;
-  if (s.turned && sg * s.turn.strain < sg * s.peak && sg * s.turn.strain > sg * s.zero) {
-    const double line = peak.stress * (s.turn.strain - s.zero) / (s.peak - s.zero);
-    aimsAtTurn = sg * s.turn.stress > sg * line && sg * s.turn.stress <= sg * peak.stress;
-  }
-  if (aimsAtTurn) {
-    if (sg * strain < sg * s.turn.strain)
-      to = s.turn;
-    else
-      from = s.turn;
+  if (pinching_) {
+    // ModIMKPinching: towards (peak strain, Fpr times the peak stress) up to the break strain
+    // A_pinch times the peak's zero-stress point under unloading with K, then on to the peak
+    // (straight to the peak when reloading starts beyond the break strain).
+    const double breakStrain = pinching_->aPinch * (s.peak - peak.stress / K);
+    if (sg * s.zero < sg * breakStrain) {
+      const double pinched = pinching_->fpr[side] * peak.stress / (s.peak - s.zero);
+      const Point breakPoint{breakStrain, pinched * (breakStrain - s.zero)};
+      if (sg * strain < sg * breakStrain)
+        to = {s.peak, pinching_->fpr[side] * peak.stress};
+      else if (sg * strain >= sg * s.peak)
+        return {b.stress, b.slope, true};  // after a break, OpenSees reports the backbone at the peak itself
+      else
+        from = breakPoint;
+    }
+  } else {
+    // When the side last turned back from a point outside the line to the peak, reloading aims
+    // there first (decided step by step: the peak moves with deterioration).
+    bool aimsAtTurn = false;
+    if (s.turned && sg * s.turn.strain < sg * s.peak && sg * s.turn.strain > sg * s.zero) {
+      const double line = peak.stress * (s.turn.strain - s.zero) / (s.peak - s.zero);
+      aimsAtTurn = sg * s.turn.stress > sg * line && sg * s.turn.stress <= sg * peak.stress;
+    }
+    if (aimsAtTurn) {
+      if (sg * strain < sg * s.turn.strain)
+        to = s.turn;
+      else
+        from = s.turn;
+    }
   }
   const double slope = (to.stress - from.stress) / (to.strain - from.strain);
   const double line = from.stress + slope * (strain - from.strain);
@@ -77,9 +99,11 @@ void ModIMKPeakOriented::deteriorate(SideState& s, int side, double energy, doub
     s.capFactor *= 1.0 - D * b;
     s.capIntercept = backbone_.initial(side).capIntercept * s.capFactor;
   }
-  // Accelerated reloading stiffness deterioration: the peak of a side that has yielded moves out.
+  // Accelerated reloading stiffness deterioration: the peak moves out (in ModIMKPeakOriented
+  // only on a side that has yielded; OpenSees, found by running it).
   const double sg = backbone_.sign(side);
-  if (det_.lambdaA > 0.0 && sg * s.peak > sg * backbone_.initial(side).My / backbone_.Ke()) {
+  const bool yielded = sg * s.peak > sg * backbone_.initial(side).My / backbone_.Ke();
+  if (det_.lambdaA > 0.0 && (yielded || pinching_)) {
     const double b = ImkBackbone::beta(energy, det_.lambdaA * energyCapacity_ - work, det_.cA);
     s.peak *= 1.0 + b;
   }
@@ -123,7 +147,6 @@ void ModIMKPeakOriented::setTrialStrain(double strain, double) {
       turned.turn = {c.strain, c.stress};
       turned.turned = true;
     }
-    t.loadedOnBound = false;
     t.refStrain = c.strain;
     t.refStress = c.stress;
   }
@@ -140,7 +163,7 @@ void ModIMKPeakOriented::setTrialStrain(double strain, double) {
     t.stress = unloading;
     t.tangent = K;
   } else {
-    const Candidate r = reloading(s, side, strain);
+    const Candidate r = reloading(s, side, strain, K);
     if (sg * unloading < sg * r.stress) {
       t.stress = unloading;
       t.tangent = K;
@@ -151,7 +174,7 @@ void ModIMKPeakOriented::setTrialStrain(double strain, double) {
     }
   }
   if (onBound) {
-    t.yieldedOnce = t.loadedOnBound = true;
+    t.yieldedOnce = true;
     if (sg * strain > sg * s.peak) s.peak = strain;
   }
   t.work = c.work + 0.5 * (c.stress + t.stress) * step;
@@ -164,7 +187,7 @@ void ModIMKPeakOriented::setTrialStrain(double strain, double) {
 }
 
 void ModIMKPeakOriented::print(std::ostream& os) const {
-  os << "UniaxialMaterial " << tag() << " type ModIMKPeakOriented K0 " << backbone_.K0() << " My+ "
+  os << "UniaxialMaterial " << tag() << " type " << className() << " K0 " << backbone_.K0() << " My+ "
      << backbone_.input(0).My << " My- " << backbone_.input(1).My << '\n';
 }
 

@@ -229,6 +229,16 @@ def _cases():
         "ModIMKPeakOriented-residual-jumps": ((imk, 1, *bl_side, *pk_all, *bl_geo, 0.7, 0.9), pk_residual),
         "ModIMKPeakOriented-elastic-cycles-first": ((imk, 1, *bl_side, 3.0, 2.5, 0.0, 4.0, 1.0, 0.9, 1.0, 1.0,
                                                     *bl_geo, 0.7, 0.9), pk_elastic_first),
+        # ModIMKPinching: the same spring with FprPos 0.3, FprNeg 0.4, A_pinch 0.6 (and others).
+        "ModIMKPinching": (("ModIMKPinching", 1, *bl_side, 0.3, 0.4, 0.6, *pk_none, *bl_geo, 1.0, 1.0), bl_path),
+        "ModIMKPinching-all-asymmetric": (("ModIMKPinching", 1, *bl_side, 0.3, 0.4, 0.6, *pk_all, *bl_geo, 0.7, 0.9),
+                                          bl_path),
+        "ModIMKPinching-accelerated": (("ModIMKPinching", 1, *bl_side, 0.25, 0.25, 0.5, 0.0, 1e12, 2.0, 0.0,
+                                        *pk_none[4:], *bl_geo, 1.0, 1.0), bl_path),
+        "ModIMKPinching-residual-jumps": (("ModIMKPinching", 1, *bl_side, 0.1, 0.8, 1.0, *pk_all, *bl_geo, 0.7, 0.9),
+                                          pk_residual),
+        "ModIMKPinching-elastic-cycles-first": (("ModIMKPinching", 1, *bl_side, 1.0, 1.0, 0.0, 3.0, 2.5, 2.0, 4.0, 1.0,
+                                                 0.9, 1.0, 1.0, *bl_geo, 0.7, 0.9), pk_elastic_first),
         "Pinching4-start-negative": (("Pinching4", 1, *p4_stiff, *p4_ratios, *p4_all, 10.0, "energy"),
                                      [-e for e in p4_path]),
     }
