@@ -58,7 +58,8 @@ void Bilin::setTrialStrain(double strain, double) {
   // less the elastic energy that unloading gives back.
   if (c.direction != 0 && dir != c.direction && det_.lambdaK > 0.0 && c.loadedOnBound) {
     const double energy = c.work - c.workAtCrossing - c.stress * c.stress / (2.0 * c.K);
-    const double b = ImkBackbone::beta(energy, 2.0 * det_.lambdaK * energyCapacity_ - c.workAtCrossing - energy, det_.cK);
+    const double b =
+        ImkBackbone::beta(energy, 2.0 * det_.lambdaK * energyCapacity_ - c.workAtCrossing - energy, det_.cK);
     // With nFactor the loss applies to the member and reaches the spring scaled (as for as).
     t.stiffnessRatio = c.stiffnessRatio * (1.0 - b);
     t.K = Ke_ * t.stiffnessRatio / (1.0 + nFactor_ * (1.0 - t.stiffnessRatio));

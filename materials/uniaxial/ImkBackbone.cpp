@@ -98,7 +98,8 @@ ImkArguments readImkArguments(CommandArgs& args, bool pinching) {
 
 void checkImkArguments(CommandArgs& args, const ImkArguments& a, bool pinching) {
   auto require = [&](bool ok, const char* name, const char* what, double value) {
-    if (!ok || !std::isfinite(value)) args.fail(std::string(name) + " must be " + what + ", got " + std::to_string(value));
+    if (!ok || !std::isfinite(value))
+      args.fail(std::string(name) + " must be " + what + ", got " + std::to_string(value));
   };
   const ImkBackbone::SideInput& pos = a.positive;
   const ImkBackbone::SideInput& neg = a.negative;

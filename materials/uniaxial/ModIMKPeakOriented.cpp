@@ -202,7 +202,9 @@ std::unique_ptr<UniaxialMaterial> buildModIMKPeakOriented(CommandArgs& args, Dom
   return std::make_unique<ModIMKPeakOriented>(tag, a.K0, a.positive, a.negative, a.deterioration);
 }
 
-void registerModIMKPeakOriented(Registry& r) { r.uniaxialMaterials.add("ModIMKPeakOriented", &buildModIMKPeakOriented); }
+void registerModIMKPeakOriented(Registry& r) {
+  r.uniaxialMaterials.add("ModIMKPeakOriented", &buildModIMKPeakOriented);
+}
 
 }  // namespace
 

@@ -22,8 +22,9 @@ namespace beamsolid {
 // that strain; beyond the peak it follows the backbone. When the last unloading on that side
 // started from a point that lies outside the line from (z, 0) to the peak (an excursion that
 // turned back before reaching the peak), reloading aims at that point first, then along the
-// line from it to the peak (unless that point's stress is beyond the peak's). Inside a side, reloading after a partial unloading follows K back to
-// the reloading line. The stress is never outside the backbone.
+// line from it to the peak (unless that point's stress is beyond the peak's). Inside a side,
+// reloading after a partial unloading follows K back to the reloading line. The stress is
+// never outside the backbone.
 // Cyclic deterioration (E_t = Lamda*My_Plus, W the work so far, beta = (E/(E_t - W))^c): the
 // excursion's energy E = W - W_c (W_c at the last zero crossing, the crossing step's work
 // included) deteriorates the side being entered at each zero crossing after the first yield,
