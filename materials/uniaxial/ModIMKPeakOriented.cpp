@@ -31,11 +31,16 @@ void ModIMKPeakOriented::revertToStart() {
     SideState& st = committed_.side[s];
     static_cast<ImkBackbone::Lines&>(st) = backbone_.initial(s);
     st.peak = st.My / backbone_.Ke();
+    st.maxReached = {st.peak, st.My};
   }
   trial_ = committed_;
 }
 
 ImkBackbone::Bound ModIMKPeakOriented::backboneAt(const SideState& s, int side, double strain) const {
+  const double sg = backbone_.sign(side);
+  // Past theta_u (a peak moved out by Lamda_A) the backbone has failed: OpenSees aims at +-1e-10.
+  if (sg * strain >= backbone_.input(side).thetaU)
+    return {sg * ImkBackbone::kFailedStress, ImkBackbone::kResidualSlope, ImkBackbone::kResidual};
   ImkBackbone::Bound b = backbone_.bound(s, side, strain);
   // On the residual OpenSees gives Res*|My0| + 1e-7 theta.
   if (b.branch == ImkBackbone::kResidual) b.stress = s.residual + ImkBackbone::kResidualSlope * strain;
@@ -64,19 +69,27 @@ ModIMKPeakOriented::Candidate ModIMKPeakOriented::reloading(const SideState& s, 
       else
         from = breakPoint;
     }
+  } else if (s.turned && sg * s.turn.strain < sg * s.maxReached.strain && sg * s.turn.strain > sg * s.zero &&
+             sg * s.turn.stress > sg * peak.stress * (s.turn.strain - s.zero) / (s.peak - s.zero) &&
+             sg * s.turn.stress <= sg * peak.stress) {
+    // The side last turned back from a point outside the line to the peak: reloading aims there
+    // first (decided step by step: the peak moves with deterioration).
+    if (sg * strain < sg * s.turn.strain)
+      to = s.turn;
+    else
+      from = s.turn;
   } else {
-    // When the side last turned back from a point outside the line to the peak, reloading aims
-    // there first (decided step by step: the peak moves with deterioration).
-    bool aimsAtTurn = false;
-    if (s.turned && sg * s.turn.strain < sg * s.peak && sg * s.turn.strain > sg * s.zero) {
-      const double line = peak.stress * (s.turn.strain - s.zero) / (s.peak - s.zero);
-      aimsAtTurn = sg * s.turn.stress > sg * line && sg * s.turn.stress <= sg * peak.stress;
-    }
-    if (aimsAtTurn) {
-      if (sg * strain < sg * s.turn.strain)
-        to = s.turn;
+    const bool yielded = sg * s.maxReached.strain > sg * backbone_.initial(side).My / backbone_.Ke();
+    if (sg * s.peak > sg * s.maxReached.strain && sg * peak.stress > sg * s.maxReached.stress &&
+        (!yielded || (s.turned && s.turn.strain == s.maxReached.strain))) {
+      // Lamda_A moved the peak out to where the backbone is stronger than where the side last
+      // turned back at its largest strain (or than the yield point): OpenSees aims at that point
+      // first (1e-10 beyond it once the side has yielded), then along the line to the peak.
+      const Point reached{s.maxReached.strain + (yielded ? sg * 1e-10 : 0.0), s.maxReached.stress};
+      if (sg * strain <= sg * reached.strain)
+        to = reached;
       else
-        from = s.turn;
+        from = reached;
     }
   }
   const double slope = (to.stress - from.stress) / (to.strain - from.strain);
@@ -99,11 +112,8 @@ void ModIMKPeakOriented::deteriorate(SideState& s, int side, double energy, doub
     s.capFactor *= 1.0 - D * b;
     s.capIntercept = backbone_.initial(side).capIntercept * s.capFactor;
   }
-  // Accelerated reloading stiffness deterioration: the peak moves out (in ModIMKPeakOriented
-  // only on a side that has yielded; OpenSees, found by running it).
-  const double sg = backbone_.sign(side);
-  const bool yielded = sg * s.peak > sg * backbone_.initial(side).My / backbone_.Ke();
-  if (det_.lambdaA > 0.0 && (yielded || pinching_)) {
+  // Accelerated reloading stiffness deterioration: the peak moves out.
+  if (det_.lambdaA > 0.0) {
     const double b = ImkBackbone::beta(energy, det_.lambdaA * energyCapacity_ - work, det_.cA);
     s.peak *= 1.0 + b;
   }
@@ -175,6 +185,7 @@ void ModIMKPeakOriented::setTrialStrain(double strain, double) {
   }
   if (onBound) {
     t.yieldedOnce = true;
+    if (sg * strain > sg * s.maxReached.strain) s.maxReached = {strain, t.stress};
     if (sg * strain > sg * s.peak) s.peak = strain;
   }
   t.work = c.work + 0.5 * (c.stress + t.stress) * step;

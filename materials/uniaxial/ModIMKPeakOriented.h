@@ -30,8 +30,9 @@ namespace beamsolid {
 // included) deteriorates the side being entered at each zero crossing after the first yield,
 // effective from the step after the crossing: My and the hardening ratio by (1 - D beta_S), the
 // post-capping line's intercept at theta = 0 (slope kept) by the product of the (1 - D beta_C),
-// the peak strain by (1 + beta_A) (no D; only on a side that has yielded, ModIMKPinching on
-// either); at each reversal after the first yield the unloading stiffness by (1 - beta_K),
+// the peak strain by (1 + beta_A) (no D; where the backbone at the moved peak is stronger than
+// where the side last turned back at its largest strain, or than the yield point, reloading
+// aims at that point first, 1e-10 beyond it once the side has yielded); at each reversal after the first yield the unloading stiffness by (1 - beta_K),
 // beta_K = (E/(2 Lamda_K My_Plus - W_c - E))^c_K, E = W - W_c - f^2/(2K). Lamda = 0 switches a
 // mode off. Differences from OpenSees are listed in docs/commands.md.
 // On the residual the stress is Res*|My0| + 1e-7 theta (slope 1e-7, as OpenSees). The first
@@ -73,7 +74,9 @@ class ModIMKPeakOriented : public UniaxialMaterial {
   };
   // The deteriorating lines of one side and its reloading line.
   struct SideState : ImkBackbone::Lines {
-    double peak = 0.0;       // the largest strain reached on this side (the yield strain at first)
+    double peak = 0.0;       // the strain reloading aims at: the largest reached (the yield strain at first),
+                             // moved out by Lamda_A
+    Point maxReached;        // the largest strain reached and its stress (the yield point at first)
     double zero = 0.0;       // where the current reloading line into this side starts
     Point turn;              // the last point this side unloaded from
     bool turned = false;

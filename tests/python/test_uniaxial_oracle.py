@@ -132,8 +132,8 @@ def _cases():
     # past theta_u, the cyclic path into both capping ranges, a path into both residuals with
     # jumps (steps of up to 15 times 0.002), and small elastic cycles before the first yield.
     # "No deterioration" uses Lamda_C = 1e12, not 0 (OpenSeesPy's Lamda_C = 0 collapses the
-    # spring at the first zero crossing: docs/commands.md); Lamda_A is 0 throughout (its small
-    # differences are listed there too).
+    # spring at the first zero crossing: docs/commands.md); Lamda_A (accelerated reloading) in
+    # two cases (its differences for small Lamda_A are listed there too).
     pk_none = (0.0, 1e12, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0)
     pk_all = (3.0, 2.5, 0.0, 4.0, 1.2, 0.9, 1.0, 1.1)
     pk_residual = _history([0.02, -0.03, 0.05, -0.01, 0.03, -0.07, 0.06, -0.09, 0.12, -0.13, 0.15, -0.2, 0.3],
@@ -226,6 +226,10 @@ def _cases():
         "ModIMKPeakOriented-unloading-stiffness": ((imk, 1, *bl_side, 0.0, 1e12, 0.0, 2.0, *pk_none[4:], *bl_geo, 1.0,
                                                    1.0), bl_path),
         "ModIMKPeakOriented-all-asymmetric": ((imk, 1, *bl_side, *pk_all, *bl_geo, 0.7, 0.9), bl_path),
+        "ModIMKPeakOriented-accelerated": ((imk, 1, *bl_side, 0.0, 1e12, 2.0, 0.0, *pk_none[4:], *bl_geo, 1.0, 1.0),
+                                           bl_path),
+        "ModIMKPeakOriented-all-with-accelerated": ((imk, 1, *bl_side, 3.0, 2.5, 1.0, 4.0, 1.2, 0.9, 1.0, 1.1, *bl_geo,
+                                                     0.7, 0.9), pk_residual),
         "ModIMKPeakOriented-residual-jumps": ((imk, 1, *bl_side, *pk_all, *bl_geo, 0.7, 0.9), pk_residual),
         "ModIMKPeakOriented-elastic-cycles-first": ((imk, 1, *bl_side, 3.0, 2.5, 0.0, 4.0, 1.0, 0.9, 1.0, 1.0,
                                                     *bl_geo, 0.7, 0.9), pk_elastic_first),
