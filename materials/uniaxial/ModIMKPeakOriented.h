@@ -90,7 +90,6 @@ class ModIMKPeakOriented : public UniaxialMaterial {
     int direction = 0;                        // sign of the last strain increment
     bool yieldedOnce = false;                 // a step ever ended on the backbone
     bool failed = false;                      // beyond theta_u once
-    bool failedReported = false;              // the first step beyond it was given
     std::array<SideState, 2> side{};
   };
   struct Candidate {
