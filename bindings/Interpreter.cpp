@@ -165,12 +165,22 @@ std::vector<std::string> Interpreter::commandNames() {
   return names;
 }
 
-Interpreter::Result Interpreter::call(const std::string& name, std::vector<CommandArgs::Value> values) {
+const Interpreter::Command* Interpreter::find(const std::string& name) {
   auto it = commands().find(name);
-  if (it == commands().end()) throw OpenSeesError("unknown command '" + name + "'");
+  return it == commands().end() ? nullptr : &it->second;
+}
+
+Interpreter::Result Interpreter::call(const std::string& name, std::vector<CommandArgs::Value> values) {
+  const Command* command = find(name);
+  if (!command) throw OpenSeesError("unknown command '" + name + "'");
+  return call(*command, name, std::move(values));
+}
+
+Interpreter::Result Interpreter::call(const Command& command, const std::string& name,
+                                      std::vector<CommandArgs::Value> values) {
   CommandArgs args(name, std::move(values));
   try {
-    return (this->*(it->second))(args);
+    return (this->*command)(args);
   } catch (const OpenSeesError&) {
     throw;
   } catch (const std::exception& e) {

@@ -98,17 +98,20 @@ PyObject* openSeesErrorType = nullptr;
 // argument tuple, no pybind11 dispatch): beamsolid.opensees binds its
 // module-level commands this way, since scripts call node and element
 // hundreds of thousands of times. `self` is (interpreter object, capsule with
-// its address, command name); the tuple keeps the interpreter alive.
+// its address, command name, capsule with the command looked up once); the
+// tuple keeps the interpreter alive.
 PyObject* fastCommand(PyObject* self, PyObject* const* args, Py_ssize_t nargs) {
   auto* interpreter = static_cast<Interpreter*>(PyCapsule_GetPointer(PyTuple_GET_ITEM(self, 1), nullptr));
   if (!interpreter) return nullptr;
+  const auto* command = static_cast<const Interpreter::Command*>(PyCapsule_GetPointer(PyTuple_GET_ITEM(self, 3), nullptr));
+  if (!command) return nullptr;
   Py_ssize_t size = 0;
   const char* text = PyUnicode_AsUTF8AndSize(PyTuple_GET_ITEM(self, 2), &size);
   if (!text) return nullptr;
   try {
     const std::string name(text, static_cast<std::size_t>(size));
     auto values = convertArgs(name, args, static_cast<std::size_t>(nargs));
-    return toPython(interpreter->call(name, std::move(values))).release().ptr();
+    return toPython(interpreter->call(*command, name, std::move(values))).release().ptr();
   } catch (const OpenSeesError& e) {
     PyErr_SetString(openSeesErrorType, e.what());
   } catch (py::error_already_set& e) {
@@ -153,7 +156,11 @@ PYBIND11_MODULE(_beamsolid, m) {
       .def(
           "command",
           [](py::object self, const std::string& name) {
-            py::tuple state = py::make_tuple(self, py::capsule(self.cast<Interpreter*>()), name);
+            const Interpreter::Command* command = Interpreter::find(name);
+            if (!command) throw OpenSeesError("unknown command '" + name + "'");
+            // The capsule holds a pointer into the static command table.
+            py::tuple state = py::make_tuple(self, py::capsule(self.cast<Interpreter*>()), name,
+                                             py::capsule(const_cast<Interpreter::Command*>(command)));
             PyObject* f = PyCFunction_NewEx(fastCommandDef(name), state.ptr(), nullptr);
             if (!f) throw py::error_already_set();
             return py::reinterpret_steal<py::object>(f);
