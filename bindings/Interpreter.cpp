@@ -2,11 +2,12 @@
 
 #include <exception>
 
+#include "analysis/DofMap.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
 
-Interpreter::Interpreter() : domain_(std::make_unique<Domain>()) {}
+Interpreter::Interpreter() : domain_(std::make_unique<Domain>()) { DofMap::resetWarnings(); }
 
 Interpreter::~Interpreter() = default;
 

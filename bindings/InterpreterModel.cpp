@@ -4,6 +4,8 @@
 #include <optional>
 
 #include "bindings/Interpreter.h"
+
+#include "analysis/DofMap.h"
 #include "core/OpenSeesError.h"
 #include "core/MultipleSupportPattern.h"
 #include "core/Registry.h"
@@ -37,6 +39,7 @@ std::string allowedNdfText(int ndm) {
 
 Result Interpreter::wipe(CommandArgs& a) {
   a.expectEnd();
+  DofMap::resetWarnings();
   // A recorder that cannot write its file still leaves the model wiped; its
   // error is raised at the end.
   std::exception_ptr recorderFailure;

@@ -42,7 +42,17 @@ Result Interpreter::nodeCoord(CommandArgs& a) {
   a.setContext("nodeCoord " + std::to_string(tag));
   const Node& n = domain_->node(tag, a.context());
   if (a.done()) return toList(n.coordinates());
-  const int dim = a.nextInt("dim");
+  // dim as 1..ndm or as 'X', 'Y', 'Z' (either case), as OpenSees takes it.
+  int dim = 0;
+  if (a.nextIsString()) {
+    const std::string name = a.nextString("dim");
+    if (name.size() == 1 && std::string("xyzXYZ").find(name[0]) != std::string::npos)
+      dim = 1 + static_cast<int>(std::string("xyzXYZ").find(name[0]) % 3);
+    else
+      a.failAt(a.position() - 1, "dim", "1.." + std::to_string(n.ndm()) + " or one of X, Y, Z");
+  } else {
+    dim = a.nextInt("dim");
+  }
   a.expectEnd();
   if (dim < 1 || dim > n.ndm())
     a.fail("dim " + std::to_string(dim) + " is out of range 1.." + std::to_string(n.ndm()));
@@ -129,7 +139,7 @@ Result Interpreter::eleType(CommandArgs& a) {
   const int tag = a.nextInt("eleTag");
   a.setContext("eleType " + std::to_string(tag));
   a.expectEnd();
-  return openSeesClassName(domain_->element(tag, a.context()).className());
+  return openSeesClassName(domain_->element(tag, a.context()));
 }
 
 Result Interpreter::getNodeTags(CommandArgs& a) {

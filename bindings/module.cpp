@@ -55,25 +55,42 @@ std::vector<CommandArgs::Value> convertArgs(const std::string& command, PyObject
       values.emplace_back(std::string(text, static_cast<std::size_t>(size)));
       continue;
     }
+    if (PyObject_HasAttrString(o, "ndim") && PyObject_HasAttrString(o, "shape") &&
+        py::int_(h.attr("ndim")).cast<long>() > 0) {
+      // A NumPy array (even of one element) is not a number: say so rather
+      // than fail in the integer conversion its __index__ offers.
+      throw OpenSeesError(command + ": argument " + std::to_string(i) + ": expected a number or a string, got an array " +
+                          std::string(py::str(h.attr("shape"))) + " (pass an element, e.g. x[0], or unpack it with *)");
+    }
     if (py::isinstance<py::str>(h)) {
       values.emplace_back(h.cast<std::string>());
-    } else if (py::isinstance<py::bool_>(h)) {
-      values.emplace_back(static_cast<long long>(h.cast<bool>()));
-    } else if (py::isinstance<py::int_>(h) || py::hasattr(h, "__index__")) {
-      try {
-        values.emplace_back(py::int_(py::reinterpret_borrow<py::object>(h)).cast<long long>());
-      } catch (const py::error_already_set&) {
-        throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
-      } catch (const py::cast_error&) {
-        throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
-      }
-    } else if (py::isinstance<py::float_>(h) || py::hasattr(h, "__float__")) {
-      values.emplace_back(py::float_(py::reinterpret_borrow<py::object>(h)).cast<double>());
-    } else {
-      const std::string type = py::str(py::type::of(h).attr("__name__"));
-      throw OpenSeesError(command + ": argument " + std::to_string(i) + ": expected a number or a string, got " +
-                          type + (type == "list" || type == "tuple" ? " (unpack it with *)" : ""));
+      continue;
     }
+    if (py::isinstance<py::bool_>(h)) {
+      values.emplace_back(static_cast<long long>(h.cast<bool>()));
+      continue;
+    }
+    if (PyIndex_Check(o)) {
+      // An integer type (NumPy's included). PyNumber_Index refuses what is
+      // not an integer, where __int__ would truncate a 0-d float array.
+      if (PyObject* index = PyNumber_Index(o)) {
+        int overflow = 0;
+        const long long v = PyLong_AsLongLongAndOverflow(index, &overflow);
+        Py_DECREF(index);
+        if (overflow) throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
+        values.emplace_back(v);
+        continue;
+      }
+      if (!PyErr_ExceptionMatches(PyExc_TypeError)) throw py::error_already_set();
+      PyErr_Clear();  // not an integer: read it as a number below
+    }
+    if (py::isinstance<py::float_>(h) || py::hasattr(h, "__float__")) {
+      values.emplace_back(py::float_(py::reinterpret_borrow<py::object>(h)).cast<double>());
+      continue;
+    }
+    const std::string type = py::str(py::type::of(h).attr("__name__"));
+    throw OpenSeesError(command + ": argument " + std::to_string(i) + ": expected a number or a string, got " + type +
+                        (type == "list" || type == "tuple" ? " (unpack it with *)" : ""));
   }
   return values;
 }

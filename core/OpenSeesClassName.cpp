@@ -2,6 +2,9 @@
 
 #include <map>
 
+#include "core/Node.h"
+#include "elements/Element.h"
+
 namespace beamsolid {
 
 std::string openSeesClassName(const std::string& elementClassName) {
@@ -17,6 +20,13 @@ std::string openSeesClassName(const std::string& elementClassName) {
   };
   const auto it = table.find(elementClassName);
   return it == table.end() ? elementClassName : it->second;
+}
+
+std::string openSeesClassName(const Element& element) {
+  std::string name = openSeesClassName(element.className());
+  const bool planar = !element.nodes().empty() && element.nodes().front() && element.nodes().front()->ndm() == 2;
+  if (planar && name.size() > 2 && name.compare(name.size() - 2, 2, "3d") == 0) name.replace(name.size() - 2, 2, "2d");
+  return name;
 }
 
 }  // namespace beamsolid

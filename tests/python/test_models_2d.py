@@ -48,6 +48,17 @@ def test_default_ndf_is_ndm_times_ndm_plus_one_over_two(model, ndm, ndf):
     assert model.nodeCoord(1, ndm) == 1.5
 
 
+def test_node_coord_takes_the_axis_by_name(model):
+    # OpenSees takes dim as 1..ndm or as X, Y, Z in either case.
+    model.model("basic", "-ndm", 2, "-ndf", 3)
+    model.node(1, 1.5, 2.5)
+    assert [model.nodeCoord(1, d) for d in ("X", "y", 1, 2)] == [1.5, 2.5, 1.5, 2.5]
+    with pytest.raises(beamsolid.OpenSeesError, match=r"nodeCoord 1.*dim 3 is out of range 1..2"):
+        model.nodeCoord(1, "Z")
+    with pytest.raises(beamsolid.OpenSeesError, match=r"nodeCoord 1: argument 2 \(dim\).*X, Y, Z"):
+        model.nodeCoord(1, "W")
+
+
 @pytest.mark.parametrize("ndm, ndf", [(1, 2), (2, 1), (2, 6), (3, 2), (4, 3)])
 def test_ndf_outside_the_space_is_refused(model, ndm, ndf):
     with pytest.raises(beamsolid.OpenSeesError, match="model.*-nd[mf]"):

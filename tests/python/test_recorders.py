@@ -510,8 +510,10 @@ def test_pvd_recorders_on_one_name_are_refused(model, tmp_path):
 
 def test_an_element_recorder_leaves_out_elements_without_the_response(tmp_path, capfd):
     """As OpenSees: a section response asked of a mix of force-based and elastic members records the
-    force-based ones only (the elastic beam is named in a warning); a name no element has gives an
-    empty file instead of stopping the script."""
+    force-based ones only (the elastic beam is named in a warning); a name no element has gives
+    rows of the time alone with -time (nothing without it, and nothing in an envelope) instead of
+    stopping the script, and each element's XML block stays, empty (OpenSeesPy 3.7.1 does all
+    this: public example 1b records 'deformations' of elastic beams)."""
     m = beamsolid.Model()
     m.model("basic", "-ndm", 2, "-ndf", 3)
     for tag, y in ((1, 0.0), (2, 3.0), (3, 6.0)):
@@ -525,6 +527,11 @@ def test_an_element_recorder_leaves_out_elements_without_the_response(tmp_path, 
     mixed, unknown = tmp_path / "mixed.out", tmp_path / "unknown.out"
     m.recorder("Element", "-file", str(mixed), "-time", "-ele", 1, 2, "section", 1, "force")
     m.recorder("Element", "-file", str(unknown), "-time", "-ele", 1, 2, "noSuchResponse")
+    untimed, envelope = tmp_path / "untimed.out", tmp_path / "envelope.out"
+    xml = tmp_path / "unknown.xml"
+    m.recorder("Element", "-file", str(untimed), "-ele", 1, 2, "noSuchResponse")
+    m.recorder("EnvelopeElement", "-file", str(envelope), "-time", "-ele", 1, 2, "noSuchResponse")
+    m.recorder("Element", "-xml", str(xml), "-time", "-ele", 2, "noSuchResponse")
     assert "element 2 (elasticBeamColumn) has no response 'section 1 force'" in capfd.readouterr().err
     m.timeSeries("Linear", 1)
     m.pattern("Plain", 1, 1)
@@ -538,4 +545,8 @@ def test_an_element_recorder_leaves_out_elements_without_the_response(tmp_path, 
     assert [len(r) for r in rows] == [3, 3]
     assert rows[1][0] == pytest.approx(1.0)
     assert abs(rows[1][2]) == pytest.approx(6.0, rel=1e-10)
-    assert unknown.read_text() == ""
+    assert unknown.read_text().split() == ["0.5", "1"]
+    assert untimed.read_text() == "" and envelope.read_text() == ""
+    text = xml.read_text()
+    assert '<ElementOutput eleType="ElasticBeam2d" eleTag="2" node1="2" node2="3"/>' in text
+    assert text.split("<Data>")[1].split() == ["0.5", "1", "</Data>", "</OpenSees>"]
