@@ -1,11 +1,14 @@
 #include "sections/SectionForceDeformation.h"
 
 #include "core/OpenSeesError.h"
+#include "sections/PlateSection.h"
 
 namespace beamsolid {
 
 const SectionForceDeformation& SectionForceDeformation::of(const BeamSection& section, const std::string& context) {
   const auto* s = dynamic_cast<const SectionForceDeformation*>(&section);
+  if (!s && dynamic_cast<const PlateSection*>(&section))
+    throw OpenSeesError(context + ": " + section.context() + " is a plate section (for shells); a beam needs a beam section");
   if (!s)
     throw OpenSeesError(context + ": " + section.context() + " is a " + std::to_string(section.ndm()) +
                         "D section; a 3D element needs a section made in a 3D model (-ndm 3)");

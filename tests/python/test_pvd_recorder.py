@@ -378,3 +378,39 @@ def test_quads_are_vtk_quads_next_to_lines(ops, tmp_path):
         e = np.array(ops.eleResponse(ele, "strains")).reshape(4, 3).mean(axis=0)
         close(row, [e[0], e[1], 0.0, e[2], 0.0, 0.0], rtol)
     close(data["stress"][2:], np.zeros((2, 6)), rtol)
+
+
+def test_shells_are_vtk_quads_with_their_section_forces(ops, tmp_path):
+    """ShellMITC4 elements are VTK_QUAD cells (elementKind 6) ahead of the
+    beams; 'shellForce' is the mean over the 4 Gauss points of eleResponse
+    'stresses' (p11 p22 p12 m11 m22 m12 q1 q2), 0 on other cells."""
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    for k, (x, z) in enumerate([(0, 0), (2, 0), (4, 0), (0, 3), (2, 3.2), (4, 3)]):
+        ops.node(k + 1, float(x), 0.0, float(z))
+    for n in (1, 2, 3):
+        ops.fix(n, 1, 1, 1, 1, 1, 1)
+    ops.section("ElasticMembranePlateSection", 1, 3.0e4, 0.2, 0.2)
+    ops.element("ShellMITC4", 1, 1, 2, 5, 4, 1)
+    ops.element("ShellMITC4", 2, 2, 3, 6, 5, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.element("elasticBeamColumn", 3, 4, 5, 0.1, 3.0e4, 1.25e4, 1e-3, 2e-3, 3e-3, 1)
+    ops.recorder("PVD", str(tmp_path / "shells"))
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(5, 10.0, 3.0, -4.0, 0.0, 0.0, 1.0)
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    assert ops.analyze(1) == 0
+    listed = read_collection(str(tmp_path / "shells.pvd"))
+    grid = meshio.read(str(tmp_path / listed[-1][1]))
+    assert [(b.type, len(b.data)) for b in grid.cells] == [("quad", 2), ("line", 1)]
+    tags = grid.point_data["nodeTag"].ravel().tolist()
+    for cell, ele in zip(grid.cells[0].data, (1, 2)):
+        assert [tags[i] for i in cell] == ops.eleNodes(ele)
+    data = cell_arrays(grid)
+    assert data["elementKind"].ravel().tolist() == [6, 6, 2]
+    for row, ele in zip(data["shellForce"][:2], (1, 2)):
+        s = np.array(ops.eleResponse(ele, "stresses")).reshape(4, 8).mean(axis=0)
+        assert np.abs(s).max() > 0.1
+        close(row, s, 1e-9)
+    close(data["shellForce"][2], np.zeros(8), 1e-9)
