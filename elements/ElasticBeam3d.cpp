@@ -8,6 +8,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "sections/ElasticSection3d.h"
 
 namespace beamsolid {
 
@@ -229,22 +230,38 @@ std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
   if (numbers == 4)
     args.fail("the 2D form (A, E, Iz, transfTag) needs a 2D model (-ndm 2); in 3D give "
               "A, E, G, J, Iy, Iz, transfTag");
-  if (numbers == 2)
-    args.fail("the section form (secTag, transfTag) is not supported yet; give A, E, G, J, Iy, Iz, transfTag");
-  if (numbers != 7)
-    args.fail("expected A, E, G, J, Iy, Iz, transfTag (7 numbers) after the nodes, got " +
+  if (numbers != 7 && numbers != 2)
+    args.fail("expected A, E, G, J, Iy, Iz, transfTag (7 numbers) or secTag, transfTag (2) after the nodes, got " +
               std::to_string(numbers));
 
   ElasticBeam3d::Properties p;
-  struct Positive {
-    double* value;
-    const char* name;
-  };
-  for (const Positive& item : {Positive{&p.A, "A"}, Positive{&p.E, "E"}, Positive{&p.G, "G"},
-                               Positive{&p.J, "J"}, Positive{&p.Iy, "Iy"}, Positive{&p.Iz, "Iz"}}) {
-    const std::size_t at = args.position();
-    *item.value = args.nextDouble(item.name);
-    if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+  if (numbers == 2) {
+    // The section form: E, A, Iz, Iy, G, J of an Elastic section.
+    const int secTag = args.nextInt("secTag");
+    const BeamSection& section = domain.sections.get(secTag, args.context());
+    const auto* elastic = dynamic_cast<const ElasticSection3d*>(&section);
+    if (!elastic)
+      args.fail("section " + std::to_string(secTag) + " is a " + (section.ndm() == 3 ? "" : "2D ") +
+                section.className() + " section; the 3D elasticBeamColumn takes an Elastic section (E, A, Iz, Iy, "
+                "G, J) made in a 3D model");
+    const ElasticSection3d::Properties& s = elastic->properties();
+    p.E = s.E;
+    p.A = s.A;
+    p.Iz = s.Iz;
+    p.Iy = s.Iy;
+    p.G = s.G;
+    p.J = s.J;
+  } else {
+    struct Positive {
+      double* value;
+      const char* name;
+    };
+    for (const Positive& item : {Positive{&p.A, "A"}, Positive{&p.E, "E"}, Positive{&p.G, "G"},
+                                 Positive{&p.J, "J"}, Positive{&p.Iy, "Iy"}, Positive{&p.Iz, "Iz"}}) {
+      const std::size_t at = args.position();
+      *item.value = args.nextDouble(item.name);
+      if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+    }
   }
   const int transfTag = args.nextInt("transfTag");
 

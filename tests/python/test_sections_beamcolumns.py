@@ -402,3 +402,30 @@ def test_force_beam_column_3d_plastic_deformation_of_an_elastic_member_under_ele
     assert max(abs(x) for x in v) > 1e-4
     assert max(abs(x) for x in m.eleResponse(1, "plasticDeformation")) < 1e-12 * max(abs(x) for x in v) + 1e-18
     m.wipe()
+
+
+def test_elastic_beam_column_3d_takes_an_elastic_section(ops):
+    # elasticBeamColumn(tag, i, j, secTag, transfTag) in 3D reads E, A, Iz, Iy,
+    # G, J from an Elastic section: a cantilever under tip forces and torque
+    # gives the closed forms in both planes, axially and in torsion (1e-12).
+    E_, A_, Iz, Iy, G_, J_ = 2.0e5, 0.05, 5.0e-4, 2.0e-4, 8.0e4, 3.0e-4
+    Lc, N, Py, Pz, T = 3.0, 7.0, -20.0, 11.0, 4.0
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, Lc, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.section("Elastic", 1, E_, A_, Iz, Iy, G_, J_)
+    ops.element("elasticBeamColumn", 1, 1, 2, 1, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, N, Py, Pz, T, 0.0, 0.0)
+    static_setup(ops, ("LoadControl", 1.0), tol=1e-12)
+    assert ops.analyze(1) == 0
+    assert ops.nodeDisp(2, 1) == pytest.approx(N * Lc / (E_ * A_), rel=1e-12)
+    assert ops.nodeDisp(2, 2) == pytest.approx(Py * Lc**3 / (3 * E_ * Iz), rel=1e-12)
+    assert ops.nodeDisp(2, 3) == pytest.approx(Pz * Lc**3 / (3 * E_ * Iy), rel=1e-12)
+    assert ops.nodeDisp(2, 4) == pytest.approx(T * Lc / (G_ * J_), rel=1e-12)
+    ops.section("Fiber", 2, "-GJ", G_ * J_)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"elasticBeamColumn 2: section 2 is a Fiber section.*Elastic"):
+        ops.element("elasticBeamColumn", 2, 1, 2, 2, 1)
