@@ -1,6 +1,7 @@
 #include "elements/ElasticBeam3d.h"
 
 #include "elements/BeamFixedEndForces.h"
+#include "elements/BeamRelease.h"
 #include "elements/ElasticBeam2d.h"
 #include "elements/BeamMass.h"
 
@@ -41,6 +42,8 @@ void ElasticBeam3d::setDomain(Domain&) {
   kb_(3, 3) = kb_(4, 4) = (4.0 + phiZ) / (1.0 + phiZ) * p.E * p.Iy / L;
   kb_(3, 4) = kb_(4, 3) = (2.0 - phiZ) / (1.0 + phiZ) * p.E * p.Iy / L;
   kb_(5, 5) = p.G * p.J / L;
+  BeamRelease::condense(kb_, 1, 2, p.releaseZ);
+  BeamRelease::condense(kb_, 3, 4, p.releaseY);
 
   initialStiff_ = transf_->initialGlobalStiffMatrix(kb_);
   formMass();
@@ -99,13 +102,16 @@ void ElasticBeam3d::addPlaneLoads(const BeamFixedEndForces& xy, const BeamFixedE
   q0_[0] += xy.basicAxial + xz.basicAxial;
   p0_[1] += xy.shearI;
   p0_[7] += xy.shearJ;
-  q0_[1] += xy.momentI;
-  q0_[2] += xy.momentJ;
+  double mzi = xy.momentI, mzj = xy.momentJ, myi = xz.momentI, myj = xz.momentJ;
+  BeamRelease::carryOver(mzi, mzj, properties_.releaseZ);
+  BeamRelease::carryOver(myi, myj, properties_.releaseY);
+  q0_[1] += mzi;
+  q0_[2] += mzj;
   p0_[2] += xz.shearI;
   p0_[8] += xz.shearJ;
   // theta_y = -w' flips the x-z plane's moments.
-  q0_[3] -= xz.momentI;
-  q0_[4] -= xz.momentJ;
+  q0_[3] -= myi;
+  q0_[4] -= myj;
 }
 
 bool ElasticBeam3d::acceptsLoad(ElementLoad::Type type) const {
@@ -195,6 +201,8 @@ void ElasticBeam3d::print(std::ostream& os) const {
      << ", A " << p.A << ", E " << p.E << ", G " << p.G << ", J " << p.J << ", Iy " << p.Iy << ", Iz " << p.Iz;
   if (p.massPerLength != 0.0)
     os << ", mass/length " << p.massPerLength << (p.consistentMass ? " (consistent)" : " (lumped)");
+  if (p.releaseZ) os << ", releasez " << p.releaseZ;
+  if (p.releaseY) os << ", releasey " << p.releaseY;
   os << ", geomTransf " << transf_->className() << ' ' << transf_->tag();
   if (length_ > 0.0) os << ", L " << length_;
   os << '\n';
@@ -274,8 +282,15 @@ std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
       p.consistentMass = true;
     } else if (args.nextFlag("-lMass")) {
       // Lumped is the default; OpenSees accepts the flag and '-cMass' wins whatever the order.
+    } else if (args.nextIsString() && (*args.peekString() == "-releasez" || *args.peekString() == "-releasey")) {
+      const bool aboutZ = args.nextString("option") == "-releasez";
+      const std::size_t at = args.position();
+      int& code = aboutZ ? p.releaseZ : p.releaseY;
+      code = args.nextInt("releaseCode");
+      if (code < 0 || code > 3) args.failAt(at, "releaseCode", "0, 1 (I), 2 (J) or 3 (both)");
     } else if (args.nextIsString()) {
-      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass', '-cMass' or '-lMass')");
+      args.fail("unknown option '" + *args.peekString() +
+                "' (expected '-mass', '-cMass', '-lMass', '-releasez' or '-releasey')");
     } else {
       args.expectEnd();
     }

@@ -8,6 +8,7 @@ script its own).
 """
 
 SCRIPTS = (
+    "beam_releases_3d",
     "shells",
     "timoshenko_beam",
     "py_pile_springs_public",
