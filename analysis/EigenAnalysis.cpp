@@ -315,7 +315,7 @@ Modes solveSparse(AnalysisModel& model, const std::vector<double>& stiffness, co
 
 }  // namespace
 
-std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, bool dense) {
+std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, bool dense, bool standard) {
   const DofMap& map = model.dofMap();
   const int n = model.numEquations();
   if (numModes < 1) throw OpenSeesError("eigen: the number of eigenvalues must be at least 1");
@@ -324,7 +324,12 @@ std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, boo
   model.formTangent(AnalysisModel::Stiffness::Current);
   const std::vector<double> stiffness = model.system().values();
   std::vector<double> mass;
-  model.assembleMass(mass);
+  if (standard) {
+    mass.assign(stiffness.size(), 0.0);
+    for (int eq = 0; eq < n; ++eq) mass[map.diagonalPosition()[eq]] = 1.0;
+  } else {
+    model.assembleMass(mass);
+  }
 
   const Partition p = partition(map, mass);
   const int nm = static_cast<int>(p.massed.size());
