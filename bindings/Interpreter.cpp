@@ -86,6 +86,8 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"getNDF", &Interpreter::getNDF},
       {"eleResponse", &Interpreter::eleResponse},
       {"eleForce", &Interpreter::eleForce},
+      {"eleDynamicalForce", &Interpreter::eleDynamicalForce},
+      {"updateElementDomain", &Interpreter::updateElementDomain},
       {"eleNodes", &Interpreter::eleNodes},
       {"eleType", &Interpreter::eleType},
       {"getNodeTags", &Interpreter::getNodeTags},

@@ -136,6 +136,7 @@ class Interpreter {
   Result getNDF(CommandArgs&);
   Result eleResponse(CommandArgs&);
   Result eleForce(CommandArgs&);
+  Result eleDynamicalForce(CommandArgs&);
   Result eleNodes(CommandArgs&);
   Result eleType(CommandArgs&);
   Result getNodeTags(CommandArgs&);
@@ -149,6 +150,7 @@ class Interpreter {
   Result getNP(CommandArgs&);
   Result getPID(CommandArgs&);
   Result barrier(CommandArgs&);
+  Result updateElementDomain(CommandArgs&);
   Result start(CommandArgs&);
   Result stop(CommandArgs&);
   Result logFile(CommandArgs&);
