@@ -8,6 +8,7 @@ script its own).
 """
 
 SCRIPTS = (
+    "orthotropic",
     "beam_releases_3d",
     "shells",
     "timoshenko_beam",
