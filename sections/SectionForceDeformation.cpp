@@ -51,21 +51,50 @@ int bendingIndex(SectionCode code) {
 
 }  // namespace
 
-Vector SectionForceDeformation::responseValues(bool forces) const {
+std::vector<int> SectionForceDeformation::responsePositions() const {
   const std::vector<SectionCode> codes = responseCodes();
+  std::vector<int> at(codes.size());
+  for (std::size_t r = 0; r < codes.size(); ++r) {
+    at[r] = bendingIndex(codes[r]);
+    for (int k = 0; at[r] < 0 && k < numShear(); ++k)
+      if (shearCode(k) == codes[r]) at[r] = 4 + k;
+  }
+  return at;
+}
+
+Vector SectionForceDeformation::responseValues(bool forces) const {
+  const std::vector<int> at = responsePositions();
   const Vector4& main = forces ? force() : deformation();
   const ShearVector shear = forces ? shearForce() : shearDeformation();
-  Vector out(codes.size());
-  for (std::size_t r = 0; r < codes.size(); ++r) {
-    const int c = bendingIndex(codes[r]);
-    if (c >= 0) {
-      out[r] = main[c];
-      continue;
-    }
-    for (int k = 0; k < numShear(); ++k)
-      if (shearCode(k) == codes[r]) out[r] = shear[k];
-  }
+  Vector out(at.size());
+  for (std::size_t r = 0; r < at.size(); ++r) out[r] = at[r] < 4 ? main[at[r]] : shear[at[r] - 4];
   return out;
+}
+
+Matrix SectionForceDeformation::responseTangent(bool initial) const {
+  const std::vector<int> at = responsePositions();
+  const int n = static_cast<int>(at.size());
+  const Matrix4& k4 = initial ? initialTangent() : tangent();
+  const ShearVector kv = initial ? shearInitialTangent() : shearTangent();
+  Matrix out = Matrix::Zero(n, n);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      if (at[r] < 4 && at[c] < 4) out(r, c) = k4(at[r], at[c]);
+      else if (at[r] == at[c]) out(r, c) = kv[at[r] - 4];
+    }
+  return out;
+}
+
+void SectionForceDeformation::setTrialResponseDeformation(const Vector& e) {
+  const std::vector<int> at = responsePositions();
+  Vector4 main = deformation();
+  ShearVector shear = shearDeformation();
+  for (std::size_t r = 0; r < at.size(); ++r) {
+    if (at[r] < 4) main[at[r]] = e[Eigen::Index(r)];
+    else shear[at[r] - 4] = e[Eigen::Index(r)];
+  }
+  setTrialDeformation(main);
+  setTrialShear(shear);
 }
 
 Response SectionForceDeformation::setResponse(const std::vector<std::string>& args) {
@@ -123,22 +152,11 @@ Response SectionForceDeformation::setResponse(const std::vector<std::string>& ar
     std::vector<std::string> names;
     for (const auto& row : forceNames)
       for (const auto& col : deformationNames) names.push_back("d" + row + "_d" + col);
-    return Response::named(std::move(names), [this, codes, n] {
-      // Position of each response component in [P, Mz, My, T, shear...].
-      std::vector<int> at(n);
-      for (int r = 0; r < n; ++r) {
-        at[r] = bendingIndex(codes[r]);
-        for (int k = 0; at[r] < 0 && k < numShear(); ++k)
-          if (shearCode(k) == codes[r]) at[r] = 4 + k;
-      }
-      const Matrix4& k4 = tangent();
-      const ShearVector kv = shearTangent();
-      Vector out = Vector::Zero(n * n);
+    return Response::named(std::move(names), [this, n] {
+      const Matrix k = responseTangent(false);
+      Vector out(n * n);
       for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-          if (at[r] < 4 && at[c] < 4) out[n * r + c] = k4(at[r], at[c]);
-          else if (at[r] == at[c]) out[n * r + c] = kv[at[r] - 4];
-        }
+        for (int c = 0; c < n; ++c) out[n * r + c] = k(r, c);
       return out;
     });
   }

@@ -65,6 +65,12 @@ class SectionForceDeformation : public BeamSection {
   virtual std::vector<SectionCode> responseCodes() const;
   // An OpenSeesError naming `context` when this section has shear components.
   void requireNoShear(const std::string& context) const;
+  // Deformations, forces and tangent of all components in responseCodes()
+  // order (for elements that take the section's own order, zeroLengthSection).
+  Vector responseDeformation() const { return responseValues(false); }
+  Vector responseForce() const { return responseValues(true); }
+  Matrix responseTangent(bool initial) const;
+  void setTrialResponseDeformation(const Vector& e);
 
   // 'force'/'forces' (P, Mz, My, T, then any shear in responseCodes() order),
   // 'deformation'/'deformations', 'forceAndDeformation', 'stiffness'
@@ -75,6 +81,8 @@ class SectionForceDeformation : public BeamSection {
  private:
   // Forces (or deformations) in responseCodes() order.
   Vector responseValues(bool forces) const;
+  // Where each of responseCodes() is in [P, Mz, My, T, shear 0, shear 1].
+  std::vector<int> responsePositions() const;
 };
 
 }  // namespace beamsolid

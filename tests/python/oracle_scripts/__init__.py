@@ -8,6 +8,7 @@ script its own).
 """
 
 SCRIPTS = (
+    "shear_sections_3d",
     "timoshenko_beam",
     "py_pile_springs_public",
     "cantilever3d",
