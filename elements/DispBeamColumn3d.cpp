@@ -100,8 +100,6 @@ namespace {
 std::unique_ptr<Element> buildDispBeamColumn3d(CommandArgs& args, Domain& domain) {
   if (domain.spaceDim() == 2) return DispBeamColumn2d::build(args, domain);
   auto d = SectionBeamColumn3d::parse(args, domain, "dispBeamColumn", BeamIntegration::Rule::Legendre, false);
-  // Its Hermite field has no shear strain: a shear section would be half used.
-  for (const auto& s : d.sections) s->requireNoShear(args.context());
   const int tag = d.tag;
   return std::make_unique<DispBeamColumn3d>(tag, std::move(d));
 }

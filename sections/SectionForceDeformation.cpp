@@ -28,14 +28,6 @@ std::vector<SectionCode> SectionForceDeformation::responseCodes() const {
   return codes;
 }
 
-void SectionForceDeformation::requireNoShear(const std::string& context) const {
-  if (numShear() == 0) return;
-  std::string codes;
-  for (int k = 0; k < numShear(); ++k) codes += std::string(k ? ", " : "") + sectionCodeName(shearCode(k));
-  throw OpenSeesError(context + ": " + this->context() + " has shear components (" + codes +
-                      "), which this element does not model; use forceBeamColumn for shear-deformable 3D sections");
-}
-
 namespace {
 
 // Position in [P, Mz, My, T] of a code, or -1 for shear.

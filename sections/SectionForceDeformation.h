@@ -46,9 +46,9 @@ class SectionForceDeformation : public BeamSection {
   // [P, Mz, My, T]: shear strains gammaY/gammaZ in, Vy/Vz out. Each is
   // uncoupled from the other components and from the other shear (true of
   // both sections), so its tangent is one number. The 4-component interface
-  // above leaves the shear state as it is; an element that does not model
-  // shear refuses these sections (requireNoShear). All others keep the
-  // defaults: no shear, nothing to pay.
+  // above leaves the shear state as it is: an element that does not model
+  // shear (dispBeamColumn, as OpenSees') leaves it unstrained. All other
+  // sections keep the defaults: no shear, nothing to pay.
   static constexpr int kMaxShear = 2;
   using ShearVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxShear, 1>;
   virtual int numShear() const { return 0; }
@@ -63,8 +63,6 @@ class SectionForceDeformation : public BeamSection {
   // All components in the order OpenSees reports them (the section's
   // responses): [P, Mz, My, T] unless a shear section says otherwise.
   virtual std::vector<SectionCode> responseCodes() const;
-  // An OpenSeesError naming `context` when this section has shear components.
-  void requireNoShear(const std::string& context) const;
   // Deformations, forces and tangent of all components in responseCodes()
   // order (for elements that take the section's own order, zeroLengthSection).
   Vector responseDeformation() const { return responseValues(false); }

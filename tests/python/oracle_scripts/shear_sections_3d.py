@@ -15,6 +15,7 @@ section('Elastic', tag, E, A, Iz, Iy, G, J, alphaY, alphaZ).
   basic system), section force, deformation and stiffness responses (order
   [P, Mz, Vy, My, Vz, T]); the Aggregator with Vz given before Vy. A
   beamPoint load along z differs on purpose (see compare.KNOWN_DIFFERENCES).
+- dispBeamColumn: both sections; the shear stays unstrained, as OpenSees'.
 - zeroLengthSection: both sections, oriented, Steel01 in Vz past yield.
 - pushover: a cantilever whose shear springs are Steel01 (Vy) and Steel01
   (Vz), pushed diagonally past the shear yield and back, so that the element
@@ -213,6 +214,25 @@ def _pushover_results(ops, out):
     out["pushover.basicStiffness"] = ops.eleResponse(1, "basicStiffness")
 
 
+def _disp_beam_results(ops, out):
+    # dispBeamColumn leaves the shear unstrained (Euler-Bernoulli answer), as OpenSees.
+    for name, section in (("elastic8", _elastic8), ("aggregator Vz Vy", _aggregator_zy)):
+        ops.wipe()
+        ops.model("basic", "-ndm", 3, "-ndf", 6)
+        ops.node(1, 0.0, 0.0, 0.0)
+        ops.node(2, 2.5, 0.0, 0.0)
+        ops.fix(1, 1, 1, 1, 1, 1, 1)
+        section(ops)
+        ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+        ops.beamIntegration("Legendre", 1, 10, 3)
+        ops.element("dispBeamColumn", 1, 1, 2, 1, 1)
+        key = f"dispBeamColumn.{name}."
+        out[key + "ok"] = _static(ops, [0.3, 1.0, 2.0, 0.4, 0.0, 0.0])
+        out[key + "disp"] = ops.nodeDisp(2)
+        out[key + "section 1 force"] = ops.eleResponse(1, "section", "1", "force")
+        out[key + "section 1 deformation"] = ops.eleResponse(1, "section", "1", "deformation")
+
+
 def _zero_length_results(ops, out):
     for name in ("aggregator", "elastic8"):
         ops.wipe()
@@ -252,5 +272,6 @@ def run(ops):
     _loads_results(ops, out)
     _pushover_results(ops, out)
     _zero_length_results(ops, out)
+    _disp_beam_results(ops, out)
     ops.wipe()
     return out
