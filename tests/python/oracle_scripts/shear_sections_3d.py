@@ -182,6 +182,11 @@ def _loads_results(ops, out):
                 out[key + "section " + s + " force"] = ops.eleResponse(1, "section", s, "force")
                 out[key + "section " + s + " deformation"] = ops.eleResponse(1, "section", s, "deformation")
             out[key + "section 2 stiffness"] = ops.eleResponse(1, "section", "2", "stiffness")
+            if case == "tip":
+                out[key + "sectionForce"] = ops.sectionForce(1, 1)
+                out[key + "sectionForce dof 5"] = ops.sectionForce(1, 2, 5)
+                out[key + "sectionDeformation dof 6"] = ops.sectionDeformation(1, 1, 6)
+                out[key + "sectionStiffness"] = ops.sectionStiffness(1, 1)
 
 
 def _steel_shear(ops):
