@@ -61,7 +61,7 @@ class SectionForceDeformation : public BeamSection {
   virtual ShearVector shearTangent() const { return {}; }
   virtual ShearVector shearInitialTangent() const { return {}; }
   // All components in the order OpenSees reports them (the section's
-  // responses): [P, Mz, My, T] unless a shear section says otherwise.
+  // responses): by default [P, Mz, My, T] then the shear codes in order.
   virtual std::vector<SectionCode> responseCodes() const;
   // Deformations, forces and tangent of all components in responseCodes()
   // order (for elements that take the section's own order, zeroLengthSection).
