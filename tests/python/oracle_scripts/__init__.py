@@ -11,6 +11,7 @@ SCRIPTS = (
     "orthotropic",
     "beam_releases_3d",
     "shells",
+    "shear_sections_3d",
     "timoshenko_beam",
     "py_pile_springs_public",
     "cantilever3d",
