@@ -61,4 +61,5 @@ SCRIPTS = (
     "bilin_frame_2d",
     "min_unbal_disp_norm",
     "hinge_integrations",
+    "tri31_mesh",
 )
