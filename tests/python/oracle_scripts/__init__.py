@@ -62,4 +62,5 @@ SCRIPTS = (
     "min_unbal_disp_norm",
     "hinge_integrations",
     "tri31_mesh",
+    "tet_mesh",
 )
