@@ -63,4 +63,5 @@ SCRIPTS = (
     "hinge_integrations",
     "tri31_mesh",
     "tet_mesh",
+    "two_node_link",
 )
