@@ -170,4 +170,33 @@ def run(ops):
         ops.analyze(1, 0.02)
         hist.append([ops.nodeDisp(2, 1), ops.nodeVel(2, 1), ops.eleResponse(2, "basicForce")[0]])
     out["damper.history"] = hist
+
+    # Rayleigh damping (betaK) reaches only the link with -doRayleigh.
+    for flag in ((), ("-doRayleigh",)):
+        ops.wipe()
+        ops.model("basic", "-ndm", 3, "-ndf", 3)
+        ops.node(1, 0.0, 0.0, 0.0)
+        ops.node(2, 1.0, 0.5, 2.0)
+        ops.fix(1, 1, 1, 1)
+        ops.uniaxialMaterial("Elastic", 1, 400.0)
+        ops.uniaxialMaterial("Elastic", 2, 150.0)
+        ops.element("twoNodeLink", 1, 1, 2, "-mat", 1, 2, 2, "-dir", 1, 2, 3, "-mass", 2.0, *flag)
+        ops.mass(2, 1.0, 1.0, 1.0)
+        ops.rayleigh(0.0, 0.02, 0.0, 0.0)
+        ops.timeSeries("Constant", 1)
+        ops.pattern("Plain", 1, 1)
+        ops.load(2, 5.0, -3.0, 2.0)
+        ops.wipeAnalysis()
+        ops.constraints("Plain")
+        ops.system("FullGeneral")
+        ops.numberer("Plain")
+        ops.test("NormDispIncr", 1e-12, 10)
+        ops.algorithm("Newton")
+        ops.integrator("Newmark", 0.5, 0.25)
+        ops.analysis("Transient")
+        hist = []
+        for _ in range(8):
+            ops.analyze(1, 0.02)
+            hist.append(ops.nodeDisp(2))
+        out[f"rayleigh{len(flag)}.history"] = hist
     return out
