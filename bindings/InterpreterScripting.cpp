@@ -29,6 +29,7 @@ int elementClassTag(const std::string& openSeesName) {
       {"DispBeamColumn2d", 62},  {"DispBeamColumn3d", 64},   {"ForceBeamColumn2d", 73},
       {"ForceBeamColumn3d", 74}, {"BeamContact3D", 115},     {"BeamEndContact3D", 118},
       {"BeamContact3Dp", 124},   {"BeamEndContact3Dp", 125}, {"ElasticTimoshenkoBeam2d", 145},
+      {"Tri31", 33},             {"TwoNodeLink", 86},        {"FourNodeTetrahedron", 179},
   };
   const auto it = tags.find(openSeesName);
   return it == tags.end() ? -1 : it->second;

@@ -16,7 +16,8 @@ std::string openSeesClassName(const std::string& elementClassName) {
       {"dispBeamColumn", "DispBeamColumn3d"},   {"forceBeamColumn", "ForceBeamColumn3d"},
       {"nonlinearBeamColumn", "ForceBeamColumn3d"}, {"quad", "FourNodeQuad"},
       {"bbarQuad", "ConstantPressureVolumeQuad"}, {"SSPquad", "SSPquad"},
-      {"SSPbrick", "SSPbrick"},
+      {"SSPbrick", "SSPbrick"},                 {"tri31", "Tri31"},
+      {"twoNodeLink", "TwoNodeLink"},
   };
   const auto it = table.find(elementClassName);
   return it == table.end() ? elementClassName : it->second;

@@ -25,7 +25,9 @@ const char* const kResponseList = "disp, vel, accel, incrDisp, reaction, unbalan
 // VTK cell type numbers (vtkCellType.h).
 constexpr std::uint8_t kVtkVertex = 1;
 constexpr std::uint8_t kVtkLine = 3;
+constexpr std::uint8_t kVtkTriangle = 5;
 constexpr std::uint8_t kVtkQuad = 9;
+constexpr std::uint8_t kVtkTetra = 10;
 constexpr std::uint8_t kVtkHexahedron = 12;
 
 // Times in the .pvd and the TimeValue field: enough digits that distinct
@@ -220,6 +222,8 @@ bool PVDRecorder::cellKindOf(const std::string& className, CellKind& kind) {
       {"bbarQuad", CellKind::Quad},
       {"SSPquad", CellKind::Quad},
       {"ShellMITC4", CellKind::Shell},
+      {"tri31", CellKind::Quad},
+      {"FourNodeTetrahedron", CellKind::Solid},
       {"elasticBeamColumn", CellKind::Beam},
       {"dispBeamColumn", CellKind::Beam},
       {"forceBeamColumn", CellKind::Beam},
@@ -385,18 +389,19 @@ void PVDRecorder::updateTopology(Domain& domain) {
     cell.kind = kind;
     switch (kind) {
       case CellKind::Solid:
-        if (nodes.size() != 8) continue;
+        if (nodes.size() != 8 && nodes.size() != 4) continue;
         // The bricks' order (bottom face counterclockwise seen from above,
-        // then the top face, node 5 above node 1) is VTK_HEXAHEDRON's.
-        cell.vtkType = kVtkHexahedron;
+        // then the top face, node 5 above node 1) is VTK_HEXAHEDRON's; a
+        // tetrahedron of positive volume is a VTK_TETRA as it stands.
+        cell.vtkType = nodes.size() == 8 ? kVtkHexahedron : kVtkTetra;
         cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
                           element->setResponse({"plasticStrains"}), element->setResponse({"equivalentPlasticStrains"})};
         solids.push_back(std::move(cell));
         break;
       case CellKind::Quad:
-        if (nodes.size() != 4) continue;
-        // The quads' nodes run counterclockwise, as VTK_QUAD's.
-        cell.vtkType = kVtkQuad;
+        if (nodes.size() != 4 && nodes.size() != 3) continue;
+        // The quads' and triangles' nodes run counterclockwise, as VTK_QUAD's and VTK_TRIANGLE's.
+        cell.vtkType = nodes.size() == 4 ? kVtkQuad : kVtkTriangle;
         cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
                           element->setResponse({"plasticStrains"}), element->setResponse({"equivalentPlasticStrains"})};
         quads.push_back(std::move(cell));

@@ -65,4 +65,7 @@ SCRIPTS = (
     "bilin_frame_2d",
     "min_unbal_disp_norm",
     "hinge_integrations",
+    "tri31_mesh",
+    "tet_mesh",
+    "two_node_link",
 )
