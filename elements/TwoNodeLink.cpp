@@ -1,6 +1,5 @@
 #include "elements/TwoNodeLink.h"
 
-#include <charconv>
 #include <ostream>
 
 #include "core/CommandArgs.h"
@@ -8,6 +7,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "elements/SpringResponses.h"
 #include "elements/ZeroLength.h"
 
 namespace beamsolid {
@@ -272,25 +272,13 @@ Response TwoNodeLink::setResponse(const std::vector<std::string>& args) {
     return {Response::numberedNames("db", numSprings()), [this] { return springValues(false); }};
   if (what == "localDisplacement" || what == "localDisplacements")
     return {endNames("u"), [this] { return Vector(toLocal(displacement_)); }};
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::string name(1, "xyz"[axis]);
-    if (what == name + "axis" || what == name + "local")
-      return {{name + "_X", name + "_Y", name + "_Z"}, [this, axis] { return Vector(axes_.row(axis).transpose()); }};
-  }
-  if (what == "material" && args.size() >= 2) {
-    int k = 0;
-    const std::string& s = args[1];
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), k);
-    if (ec != std::errc() || ptr != s.data() + s.size() || k < 1 || k > numSprings()) return {};
-    return springs_[k - 1].material->setResponse(std::vector<std::string>(args.begin() + 2, args.end()));
-  }
+  if (Response r = SpringResponses::axis(what, axes_)) return r;
+  if (Response r = SpringResponses::material(args, springs_)) return r;
   return {};
 }
 
 bool TwoNodeLink::setParameter(const std::vector<std::string>& args, double value) {
-  bool accepted = false;
-  for (Spring& s : springs_) accepted = s.material->setParameter(args, value) || accepted;
-  return accepted;
+  return SpringResponses::setParameter(springs_, args, value);
 }
 
 void TwoNodeLink::print(std::ostream& os) const {
