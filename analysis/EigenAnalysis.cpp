@@ -368,8 +368,14 @@ std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, boo
     multiply(map, stiffness, phi, Kphi);
     modes.values[k] = phi.dot(Kphi) / m;
     Eigen::Index largest = 0;
-    phi.cwiseAbs().maxCoeff(&largest);
+    const double biggest = phi.cwiseAbs().maxCoeff(&largest);
     phi *= (phi[largest] < 0.0 ? -1.0 : 1.0) / std::sqrt(m);
+    // Round-off where a mode has no motion (the other direction of a
+    // symmetric frame: 1e-16 of the largest component) is zero, as in
+    // OpenSees' modes, so modal participations print as 0, not 1e-28.
+    const double cut = 1e-12 * biggest / std::sqrt(m);
+    for (Eigen::Index i = 0; i < phi.size(); ++i)
+      if (std::fabs(phi[i]) < cut) phi[i] = 0.0;
   }
 
   // Node mode shapes through the DofMap terms: constrained dofs follow their
