@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 
 #include "analysis/ConstraintHandler.h"
@@ -11,6 +12,16 @@
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
+
+namespace {
+// The last warning said (the dof map is rebuilt by every analysis of a model).
+std::string& lastWarning() {
+  static std::string text;
+  return text;
+}
+}  // namespace
+
+void DofMap::resetWarnings() { lastWarning().clear(); }
 
 namespace {
 std::string dofName(const Node& n, int dof) {
@@ -98,10 +109,13 @@ void DofMap::build(const Domain& domain, const ConstraintHandler& handler, const
           if (mp.C(i, k) != 0.0) src.push_back({fullOf(mp.retainedNode, mp.retainedDofs[k]), mp.C(i, k)});
       }
     }
-    if (!overridden.empty())
-      std::cerr << "WARNING constraints Transformation: " << overridden.size()
-                << " fixed dof(s) also constrained by a multi-point constraint (" << overridden.front()
-                << (overridden.size() > 1 ? ", ..." : "") << "); their fixes are ignored\n";
+    if (!overridden.empty()) {
+      std::ostringstream warning;
+      warning << "WARNING constraints Transformation: " << overridden.size()
+              << " fixed dof(s) also constrained by a multi-point constraint (" << overridden.front()
+              << (overridden.size() > 1 ? ", ..." : "") << "); their fixes are ignored\n";
+      if (warning.str() != lastWarning()) std::cerr << (lastWarning() = warning.str());
+    }
   }
 
   // --- resolve every full dof into free full dofs (chains of MPs allowed) ----

@@ -20,6 +20,10 @@ class Numberer;
 // into it are built here once per model change.
 class DofMap {
  public:
+  // Warnings are said once per model (a dof map is rebuilt by every
+  // analysis); a new model or wipe() lets them be said again.
+  static void resetWarnings();
+
   struct Term {
     int equation;
     double coefficient;

@@ -315,7 +315,7 @@ Modes solveSparse(AnalysisModel& model, const std::vector<double>& stiffness, co
 
 }  // namespace
 
-std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, bool dense) {
+std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, bool dense, bool standard) {
   const DofMap& map = model.dofMap();
   const int n = model.numEquations();
   if (numModes < 1) throw OpenSeesError("eigen: the number of eigenvalues must be at least 1");
@@ -324,7 +324,12 @@ std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, boo
   model.formTangent(AnalysisModel::Stiffness::Current);
   const std::vector<double> stiffness = model.system().values();
   std::vector<double> mass;
-  model.assembleMass(mass);
+  if (standard) {
+    mass.assign(stiffness.size(), 0.0);
+    for (int eq = 0; eq < n; ++eq) mass[map.diagonalPosition()[eq]] = 1.0;
+  } else {
+    model.assembleMass(mass);
+  }
 
   const Partition p = partition(map, mass);
   const int nm = static_cast<int>(p.massed.size());
@@ -363,8 +368,14 @@ std::vector<double> EigenAnalysis::solve(AnalysisModel& model, int numModes, boo
     multiply(map, stiffness, phi, Kphi);
     modes.values[k] = phi.dot(Kphi) / m;
     Eigen::Index largest = 0;
-    phi.cwiseAbs().maxCoeff(&largest);
+    const double biggest = phi.cwiseAbs().maxCoeff(&largest);
     phi *= (phi[largest] < 0.0 ? -1.0 : 1.0) / std::sqrt(m);
+    // Round-off where a mode has no motion (the other direction of a
+    // symmetric frame: 1e-16 of the largest component) is zero, as in
+    // OpenSees' modes, so modal participations print as 0, not 1e-28.
+    const double cut = 1e-12 * biggest / std::sqrt(m);
+    for (Eigen::Index i = 0; i < phi.size(); ++i)
+      if (std::fabs(phi[i]) < cut) phi[i] = 0.0;
   }
 
   // Node mode shapes through the DofMap terms: constrained dofs follow their

@@ -12,7 +12,9 @@ class EigenAnalysis {
  public:
   // `dense`: '-fullGenLapack' (dense solve of the whole problem); otherwise a
   // sparse shift-invert Lanczos (Spectra) over a sparse factorization.
-  static std::vector<double> solve(AnalysisModel& model, int numModes, bool dense);
+  // `standard`: eigen('-standard', ...), K phi = lambda phi (M = I on the
+  // equations, the masses ignored, as OpenSees); modes of unit length.
+  static std::vector<double> solve(AnalysisModel& model, int numModes, bool dense, bool standard = false);
 };
 
 }  // namespace beamsolid

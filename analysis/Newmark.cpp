@@ -138,7 +138,27 @@ std::unique_ptr<Integrator> buildGeneralizedAlpha(CommandArgs& args, Domain&) {
   return std::make_unique<Newmark>(gamma, beta, Newmark::Form::D, alphaF, "GeneralizedAlpha", alphaM);
 }
 
+// HHTGeneralized alphaI alphaF <beta gamma>: OpenSees' name for the same
+// method with alphaI = alphaM, and beta before gamma.
+std::unique_ptr<Integrator> buildHHTGeneralized(CommandArgs& args, Domain&) {
+  const std::size_t atI = args.position();
+  const double alphaI = args.nextDouble("alphaI");
+  const std::size_t atF = args.position();
+  const double alphaF = args.nextDouble("alphaF");
+  if (!(alphaI > 0.0) || !std::isfinite(alphaI)) args.failAt(atI, "alphaI", "a positive number (alphaI = 1: HHT)");
+  if (!(alphaF > 0.0 && alphaF <= 1.0)) args.failAt(atF, "alphaF", "a number in (0, 1] (alphaF = 1: no force averaging)");
+  double beta = 0.25 * (1.0 + alphaI - alphaF) * (1.0 + alphaI - alphaF), gamma = 0.5 + alphaI - alphaF;
+  if (!args.done()) {
+    beta = args.nextDouble("beta");
+    gamma = args.nextDouble("gamma");
+  }
+  args.expectEnd();
+  if (!(gamma > 0.0) || !(beta > 0.0)) args.fail("beta and gamma must be positive");
+  return std::make_unique<Newmark>(gamma, beta, Newmark::Form::D, alphaF, "HHTGeneralized", alphaI);
+}
+
 void registerNewmark(Registry& r) {
+  r.integrators.add("HHTGeneralized", &buildHHTGeneralized);
   r.integrators.add("GeneralizedAlpha", &buildGeneralizedAlpha);
   r.integrators.add("Newmark", &buildNewmark);
   r.integrators.add("HHT", &buildHHT);

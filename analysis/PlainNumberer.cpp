@@ -19,10 +19,12 @@ class PlainNumberer : public Numberer {
 };
 
 void registerPlainNumberer(Registry& r) {
-  r.numberers.add("Plain", [](CommandArgs& args, Domain&) -> std::unique_ptr<Numberer> {
-    args.expectEnd();
-    return std::make_unique<PlainNumberer>();
-  });
+  // 'ParallelPlain' (OpenSeesSP/MP's name) numbers the same way in one process.
+  for (const char* name : {"Plain", "ParallelPlain"})
+    r.numberers.add(name, [](CommandArgs& args, Domain&) -> std::unique_ptr<Numberer> {
+      args.expectEnd();
+      return std::make_unique<PlainNumberer>();
+    });
 }
 
 }  // namespace

@@ -68,10 +68,12 @@ class RCMNumberer : public Numberer {
 };
 
 void registerRCMNumberer(Registry& r) {
-  r.numberers.add("RCM", [](CommandArgs& args, Domain&) -> std::unique_ptr<Numberer> {
-    args.expectEnd();
-    return std::make_unique<RCMNumberer>();
-  });
+  // 'ParallelRCM' (OpenSeesSP/MP's name) numbers the same way in one process.
+  for (const char* name : {"RCM", "ParallelRCM"})
+    r.numberers.add(name, [](CommandArgs& args, Domain&) -> std::unique_ptr<Numberer> {
+      args.expectEnd();
+      return std::make_unique<RCMNumberer>();
+    });
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 Issue 17 asks that building a model by commands cost no more per command than OpenSeesPy. Each
 program runs the same command loop in a fresh process (N commands of each kind; the programs take
 turns, `--rounds` times, and the fastest round counts), CPU microseconds per command. The loop:
-2N nodes, N fix, N equalDOF, N Truss, N mass, N load, N sp, then N nodeDisp and N nodeCoord.
+2N nodes, N fix, N equalDOF, N Truss, N mass, N load, N sp, then N nodeDisp and N nodeCoord;
+then about N stdBricks on a structured grid of their own nodes.
 
     PYTHONPATH=python .venv/bin/python benchmarks/command_cost.py [--n 50000] [--rounds 3]
 
@@ -42,6 +43,24 @@ timed('load', lambda: [ops.load(i + 1 + N, 1.0, 0.0, 0.0) for i in range(N)])
 timed('sp', lambda: [ops.sp(i + 1 + N, 3, 0.01) for i in range(N)])
 timed('nodeDisp', lambda: [ops.nodeDisp(i + 1, 1) for i in range(N)])
 timed('nodeCoord', lambda: [ops.nodeCoord(i + 1) for i in range(N)])
+# A structured grid of about N stdBricks on their own nodes (per brick).
+n = max(1, round(N ** (1 / 3)))
+base = 2 * N
+ops.wipe(); ops.model('basic', '-ndm', 3, '-ndf', 3)
+for k in range(n + 1):
+    for j in range(n + 1):
+        for i in range(n + 1):
+            ops.node(base + 1 + i + (n + 1) * (j + (n + 1) * k), float(i), float(j), float(k))
+ops.nDMaterial('ElasticIsotropic', 1, 1000.0, 0.3)
+def nid(i, j, k):
+    return base + 1 + i + (n + 1) * (j + (n + 1) * k)
+bricks = [(nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k), nid(i, j, k + 1),
+           nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1), nid(i, j + 1, k + 1))
+          for k in range(n) for j in range(n) for i in range(n)]
+t = time.process_time()
+for e, nodes in enumerate(bricks):
+    ops.element('stdBrick', e + 1, *nodes, 1)
+out['element stdBrick'] = (time.process_time() - t) / len(bricks) * 1e6
 print("RESULT" + json.dumps(out))
 '''
 

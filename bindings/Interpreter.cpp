@@ -2,11 +2,12 @@
 
 #include <exception>
 
+#include "analysis/DofMap.h"
 #include "core/OpenSeesError.h"
 
 namespace beamsolid {
 
-Interpreter::Interpreter() : domain_(std::make_unique<Domain>()) {}
+Interpreter::Interpreter() : domain_(std::make_unique<Domain>()) { DofMap::resetWarnings(); }
 
 Interpreter::~Interpreter() = default;
 
@@ -85,6 +86,8 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"getNDF", &Interpreter::getNDF},
       {"eleResponse", &Interpreter::eleResponse},
       {"eleForce", &Interpreter::eleForce},
+      {"eleDynamicalForce", &Interpreter::eleDynamicalForce},
+      {"updateElementDomain", &Interpreter::updateElementDomain},
       {"eleNodes", &Interpreter::eleNodes},
       {"eleType", &Interpreter::eleType},
       {"getNodeTags", &Interpreter::getNodeTags},
@@ -165,12 +168,22 @@ std::vector<std::string> Interpreter::commandNames() {
   return names;
 }
 
-Interpreter::Result Interpreter::call(const std::string& name, std::vector<CommandArgs::Value> values) {
+const Interpreter::Command* Interpreter::find(const std::string& name) {
   auto it = commands().find(name);
-  if (it == commands().end()) throw OpenSeesError("unknown command '" + name + "'");
+  return it == commands().end() ? nullptr : &it->second;
+}
+
+Interpreter::Result Interpreter::call(const std::string& name, std::vector<CommandArgs::Value> values) {
+  const Command* command = find(name);
+  if (!command) throw OpenSeesError("unknown command '" + name + "'");
+  return call(*command, name, std::move(values));
+}
+
+Interpreter::Result Interpreter::call(const Command& command, const std::string& name,
+                                      std::vector<CommandArgs::Value> values) {
   CommandArgs args(name, std::move(values));
   try {
-    return (this->*(it->second))(args);
+    return (this->*command)(args);
   } catch (const OpenSeesError&) {
     throw;
   } catch (const std::exception& e) {

@@ -29,6 +29,10 @@ class Interpreter {
 
   // Runs one command; every failure is an OpenSeesError naming the command.
   Result call(const std::string& name, std::vector<CommandArgs::Value> args);
+  // The command `name` (nullptr if there is none), so that a caller that runs
+  // it many times looks it up once (beamsolid.opensees's functions).
+  static const Command* find(const std::string& name);
+  Result call(const Command& command, const std::string& name, std::vector<CommandArgs::Value> args);
   static std::vector<std::string> commandNames();
 
   Domain& domain() { return *domain_; }
@@ -132,6 +136,7 @@ class Interpreter {
   Result getNDF(CommandArgs&);
   Result eleResponse(CommandArgs&);
   Result eleForce(CommandArgs&);
+  Result eleDynamicalForce(CommandArgs&);
   Result eleNodes(CommandArgs&);
   Result eleType(CommandArgs&);
   Result getNodeTags(CommandArgs&);
@@ -145,6 +150,7 @@ class Interpreter {
   Result getNP(CommandArgs&);
   Result getPID(CommandArgs&);
   Result barrier(CommandArgs&);
+  Result updateElementDomain(CommandArgs&);
   Result start(CommandArgs&);
   Result stop(CommandArgs&);
   Result logFile(CommandArgs&);

@@ -140,14 +140,15 @@ Result Interpreter::wipeAnalysis(CommandArgs& a) {
 }
 
 Result Interpreter::eigen(CommandArgs& a) {
-  bool dense = false;
+  bool dense = false, standard = false;
   int numModes = 0;
   while (!a.done()) {
     if (a.nextIsString()) {
       const std::string opt = a.nextString("solver");
       if (opt == "-fullGenLapack") dense = true;
-      else if (opt == "-genBandArpack" || opt == "-symmBandLapack" || opt == "-standard" || opt == "-generalized") {}
-      else a.fail("unknown option '" + opt + "' (expected -fullGenLapack or -genBandArpack)");
+      else if (opt == "-standard") standard = true;  // K phi = lambda phi, as OpenSees
+      else if (opt == "-genBandArpack" || opt == "-symmBandLapack" || opt == "-generalized") {}
+      else a.fail("unknown option '" + opt + "' (expected -genBandArpack, -fullGenLapack, -symmBandLapack, -standard or -generalized)");
     } else {
       numModes = a.nextInt("numEigenvalues");
     }
@@ -165,7 +166,7 @@ Result Interpreter::eigen(CommandArgs& a) {
   if (numModes > model.numEquations())
     a.fail("asked for " + std::to_string(numModes) + " eigenvalues but the model has only " +
            std::to_string(model.numEquations()) + " equations");
-  eigenvalues_ = EigenAnalysis::solve(model, numModes, dense);
+  eigenvalues_ = EigenAnalysis::solve(model, numModes, dense, standard);
   haveModalProperties_ = false;
   domain_->setEigenvalues(eigenvalues_);
   return eigenvalues_;

@@ -4,6 +4,8 @@
 #include <optional>
 
 #include "bindings/Interpreter.h"
+
+#include "analysis/DofMap.h"
 #include "core/OpenSeesError.h"
 #include "core/MultipleSupportPattern.h"
 #include "core/Registry.h"
@@ -37,6 +39,7 @@ std::string allowedNdfText(int ndm) {
 
 Result Interpreter::wipe(CommandArgs& a) {
   a.expectEnd();
+  DofMap::resetWarnings();
   // A recorder that cannot write its file still leaves the model wiped; its
   // error is raised at the end.
   std::exception_ptr recorderFailure;
@@ -608,10 +611,20 @@ Result Interpreter::remove(CommandArgs& a) {
   } else if (what == "recorders") {
     domain_->removeRecorders();
   } else if (what == "sp") {
+    // remove('sp', nodeTag, dof, <patternTag>): with the pattern, only its sp.
     const int node = a.nextInt("nodeTag"), dof = a.nextInt("dof");
     if (dof < 1) a.failAt(a.position() - 1, "dof", "a dof number >= 1 (1-based)");
-    if (!domain_->removeSP(node, dof - 1))
+    if (!a.done()) {
+      const int patternTag = a.nextInt("patternTag");
+      LoadPattern* p = domain_->findPattern(patternTag);
+      if (!p) a.fail("load pattern " + std::to_string(patternTag) + " does not exist");
+      if (!p->removeSP(node, dof - 1))
+        a.fail("load pattern " + std::to_string(patternTag) + " has no sp on node " + std::to_string(node) + " dof " +
+               std::to_string(dof));
+      domain_->touch();
+    } else if (!domain_->removeSP(node, dof - 1)) {
       a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) + " has no single-point constraint");
+    }
   } else if (what == "mp") {
     const int node = a.nextInt("constrainedNode");
     if (!domain_->removeMP(node)) a.fail("node " + std::to_string(node) + " has no multi-point constraint");

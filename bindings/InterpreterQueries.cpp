@@ -42,7 +42,17 @@ Result Interpreter::nodeCoord(CommandArgs& a) {
   a.setContext("nodeCoord " + std::to_string(tag));
   const Node& n = domain_->node(tag, a.context());
   if (a.done()) return toList(n.coordinates());
-  const int dim = a.nextInt("dim");
+  // dim as 1..ndm or as 'X', 'Y', 'Z' (either case), as OpenSees takes it.
+  int dim = 0;
+  if (a.nextIsString()) {
+    const std::string name = a.nextString("dim");
+    if (name.size() == 1 && std::string("xyzXYZ").find(name[0]) != std::string::npos)
+      dim = 1 + static_cast<int>(std::string("xyzXYZ").find(name[0]) % 3);
+    else
+      a.failAt(a.position() - 1, "dim", "1.." + std::to_string(n.ndm()) + " or one of X, Y, Z");
+  } else {
+    dim = a.nextInt("dim");
+  }
   a.expectEnd();
   if (dim < 1 || dim > n.ndm())
     a.fail("dim " + std::to_string(dim) + " is out of range 1.." + std::to_string(n.ndm()));
@@ -105,16 +115,37 @@ Result Interpreter::eleResponse(CommandArgs& a) {
   return toList(r.value());
 }
 
-Result Interpreter::eleForce(CommandArgs& a) {
-  const int tag = a.nextInt("eleTag");
-  a.setContext("eleForce " + std::to_string(tag));
-  Element& e = domain_->element(tag, a.context());
-  VectorView f = e.resistingForce();
+namespace {
+// The whole force vector, or its entry (dof) when one more argument is given.
+Interpreter::Result forceOrEntry(CommandArgs& a, const Vector& f) {
   if (a.done()) return toList(f);
   const int dof = a.nextInt("dof");
   a.expectEnd();
   if (dof < 1 || dof > f.size()) a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(f.size()));
   return f[dof - 1];
+}
+}  // namespace
+
+Result Interpreter::eleForce(CommandArgs& a) {
+  const int tag = a.nextInt("eleTag");
+  a.setContext("eleForce " + std::to_string(tag));
+  Element& e = domain_->element(tag, a.context());
+  return forceOrEntry(a, e.resistingForce());
+}
+
+// As OpenSees: the resisting force with the element's inertia and Rayleigh
+// damping forces (what balances the applied loads in a transient analysis).
+Result Interpreter::eleDynamicalForce(CommandArgs& a) {
+  const int tag = a.nextInt("eleTag");
+  a.setContext("eleDynamicalForce " + std::to_string(tag));
+  Element& e = domain_->element(tag, a.context());
+  Vector f = e.resistingForce();
+  f += e.inertiaForce();
+  f += e.rayleighForce(e.rayleighFactors(domain_->rayleigh()));
+  Result r = forceOrEntry(a, f);
+  // OpenSeesPy gives one dof's entry as a list of one value here.
+  if (const double* value = std::get_if<double>(&r)) return std::vector<double>{*value};
+  return r;
 }
 
 Result Interpreter::eleNodes(CommandArgs& a) {
@@ -129,7 +160,7 @@ Result Interpreter::eleType(CommandArgs& a) {
   const int tag = a.nextInt("eleTag");
   a.setContext("eleType " + std::to_string(tag));
   a.expectEnd();
-  return openSeesClassName(domain_->element(tag, a.context()).className());
+  return openSeesClassName(domain_->element(tag, a.context()));
 }
 
 Result Interpreter::getNodeTags(CommandArgs& a) {

@@ -29,19 +29,10 @@ int elementClassTag(const std::string& openSeesName) {
       {"DispBeamColumn2d", 62},  {"DispBeamColumn3d", 64},   {"ForceBeamColumn2d", 73},
       {"ForceBeamColumn3d", 74}, {"BeamContact3D", 115},     {"BeamEndContact3D", 118},
       {"BeamContact3Dp", 124},   {"BeamEndContact3Dp", 125}, {"ElasticTimoshenkoBeam2d", 145},
+      {"Tri31", 33},             {"TwoNodeLink", 86},        {"FourNodeTetrahedron", 179},
   };
   const auto it = tags.find(openSeesName);
   return it == tags.end() ? -1 : it->second;
-}
-
-// The OpenSees class name of an element in a model of ndm dimensions.
-std::string elementClassName(const Element& e, int ndm) {
-  std::string name = openSeesClassName(e.className());
-  if (ndm == 2) {
-    for (const char* beam : {"ElasticBeam", "DispBeamColumn", "ForceBeamColumn", "ElasticTimoshenkoBeam"})
-      if (name == std::string(beam) + "3d") name = std::string(beam) + "2d";
-  }
-  return name;
 }
 
 // OpenSees' class names of the uniaxial materials BeamSolid has.
@@ -181,7 +172,7 @@ Result Interpreter::getEleClassTags(CommandArgs& a) {
   }
   std::vector<int> tags;
   for (const Element* e : elements) {
-    const int t = elementClassTag(elementClassName(*e, domain_->ndm()));
+    const int t = elementClassTag(openSeesClassName(*e));
     if (t < 0) a.fail("element " + std::to_string(e->tag()) + " (" + e->className() + ") has no OpenSees class tag");
     tags.push_back(t);
   }

@@ -40,6 +40,13 @@ Result Interpreter::barrier(CommandArgs& a) {
   return {};
 }
 
+// Elements read their nodes when they are made and after setNodeCoord
+// (Domain::nodeMoved): there is nothing left to update.
+Result Interpreter::updateElementDomain(CommandArgs& a) {
+  a.expectEnd();
+  return {};
+}
+
 Result Interpreter::start(CommandArgs& a) {
   a.expectEnd();
   timerStart_ = std::chrono::steady_clock::now();

@@ -55,25 +55,42 @@ std::vector<CommandArgs::Value> convertArgs(const std::string& command, PyObject
       values.emplace_back(std::string(text, static_cast<std::size_t>(size)));
       continue;
     }
+    if (PyObject_HasAttrString(o, "ndim") && PyObject_HasAttrString(o, "shape") &&
+        py::int_(h.attr("ndim")).cast<long>() > 0) {
+      // A NumPy array (even of one element) is not a number: say so rather
+      // than fail in the integer conversion its __index__ offers.
+      throw OpenSeesError(command + ": argument " + std::to_string(i) + ": expected a number or a string, got an array " +
+                          std::string(py::str(h.attr("shape"))) + " (pass an element, e.g. x[0], or unpack it with *)");
+    }
     if (py::isinstance<py::str>(h)) {
       values.emplace_back(h.cast<std::string>());
-    } else if (py::isinstance<py::bool_>(h)) {
-      values.emplace_back(static_cast<long long>(h.cast<bool>()));
-    } else if (py::isinstance<py::int_>(h) || py::hasattr(h, "__index__")) {
-      try {
-        values.emplace_back(py::int_(py::reinterpret_borrow<py::object>(h)).cast<long long>());
-      } catch (const py::error_already_set&) {
-        throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
-      } catch (const py::cast_error&) {
-        throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
-      }
-    } else if (py::isinstance<py::float_>(h) || py::hasattr(h, "__float__")) {
-      values.emplace_back(py::float_(py::reinterpret_borrow<py::object>(h)).cast<double>());
-    } else {
-      const std::string type = py::str(py::type::of(h).attr("__name__"));
-      throw OpenSeesError(command + ": argument " + std::to_string(i) + ": expected a number or a string, got " +
-                          type + (type == "list" || type == "tuple" ? " (unpack it with *)" : ""));
+      continue;
     }
+    if (py::isinstance<py::bool_>(h)) {
+      values.emplace_back(static_cast<long long>(h.cast<bool>()));
+      continue;
+    }
+    if (PyIndex_Check(o)) {
+      // An integer type (NumPy's included). PyNumber_Index refuses what is
+      // not an integer, where __int__ would truncate a 0-d float array.
+      if (PyObject* index = PyNumber_Index(o)) {
+        int overflow = 0;
+        const long long v = PyLong_AsLongLongAndOverflow(index, &overflow);
+        Py_DECREF(index);
+        if (overflow) throw OpenSeesError(command + ": argument " + std::to_string(i) + ": integer out of range");
+        values.emplace_back(v);
+        continue;
+      }
+      if (!PyErr_ExceptionMatches(PyExc_TypeError)) throw py::error_already_set();
+      PyErr_Clear();  // not an integer: read it as a number below
+    }
+    if (py::isinstance<py::float_>(h) || py::hasattr(h, "__float__")) {
+      values.emplace_back(py::float_(py::reinterpret_borrow<py::object>(h)).cast<double>());
+      continue;
+    }
+    const std::string type = py::str(py::type::of(h).attr("__name__"));
+    throw OpenSeesError(command + ": argument " + std::to_string(i) + ": expected a number or a string, got " + type +
+                        (type == "list" || type == "tuple" ? " (unpack it with *)" : ""));
   }
   return values;
 }
@@ -98,17 +115,20 @@ PyObject* openSeesErrorType = nullptr;
 // argument tuple, no pybind11 dispatch): beamsolid.opensees binds its
 // module-level commands this way, since scripts call node and element
 // hundreds of thousands of times. `self` is (interpreter object, capsule with
-// its address, command name); the tuple keeps the interpreter alive.
+// its address, command name, capsule with the command looked up once); the
+// tuple keeps the interpreter alive.
 PyObject* fastCommand(PyObject* self, PyObject* const* args, Py_ssize_t nargs) {
   auto* interpreter = static_cast<Interpreter*>(PyCapsule_GetPointer(PyTuple_GET_ITEM(self, 1), nullptr));
   if (!interpreter) return nullptr;
+  const auto* command = static_cast<const Interpreter::Command*>(PyCapsule_GetPointer(PyTuple_GET_ITEM(self, 3), nullptr));
+  if (!command) return nullptr;
   Py_ssize_t size = 0;
   const char* text = PyUnicode_AsUTF8AndSize(PyTuple_GET_ITEM(self, 2), &size);
   if (!text) return nullptr;
   try {
     const std::string name(text, static_cast<std::size_t>(size));
     auto values = convertArgs(name, args, static_cast<std::size_t>(nargs));
-    return toPython(interpreter->call(name, std::move(values))).release().ptr();
+    return toPython(interpreter->call(*command, name, std::move(values))).release().ptr();
   } catch (const OpenSeesError& e) {
     PyErr_SetString(openSeesErrorType, e.what());
   } catch (py::error_already_set& e) {
@@ -153,7 +173,11 @@ PYBIND11_MODULE(_beamsolid, m) {
       .def(
           "command",
           [](py::object self, const std::string& name) {
-            py::tuple state = py::make_tuple(self, py::capsule(self.cast<Interpreter*>()), name);
+            const Interpreter::Command* command = Interpreter::find(name);
+            if (!command) throw OpenSeesError("unknown command '" + name + "'");
+            // The capsule holds a pointer into the static command table.
+            py::tuple state = py::make_tuple(self, py::capsule(self.cast<Interpreter*>()), name,
+                                             py::capsule(const_cast<Interpreter::Command*>(command)));
             PyObject* f = PyCFunction_NewEx(fastCommandDef(name), state.ptr(), nullptr);
             if (!f) throw py::error_already_set();
             return py::reinterpret_steal<py::object>(f);

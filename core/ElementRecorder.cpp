@@ -69,19 +69,21 @@ ElementRecorder::ElementRecorder(const Domain& domain, Spec spec, bool envelope)
   for (int tag : spec_.elementTags) {
     Element& element = domain.element(tag, spec_.context);
     Response r = element.setResponse(spec_.responseArgs);
-    if (!r) {
-      // As OpenSees: the element is left out (a recorder no element answers writes nothing), so a
-      // script that records a name some element lacks still runs; the warning says which.
-      std::cerr << "WARNING " << spec_.context << ": element " << tag << " (" << element.className()
-                << ") has no response '" << response << "'; it is left out of the file\n";
-      continue;
-    }
     // OpenSees' XML: eleType (its class name) before eleTag; an envelope
     // with -time wraps each element's block with one time block per value.
     RecorderOutput::XmlBlock block{
-        "ElementOutput", {{"eleType", openSeesClassName(element.className())}, {"eleTag", std::to_string(tag)}}, {}};
+        "ElementOutput", {{"eleType", openSeesClassName(element)}, {"eleTag", std::to_string(tag)}}, {}};
     for (std::size_t i = 0; i < element.nodeTags().size(); ++i)
       block.attributes.emplace_back("node" + std::to_string(i + 1), std::to_string(element.nodeTags()[i]));
+    if (!r) {
+      // As OpenSees: the element is left out of the data (its XML block
+      // stays, empty), so a script that records a name some element lacks
+      // still runs; the warning says which.
+      std::cerr << "WARNING " << spec_.context << ": element " << tag << " (" << element.className()
+                << ") has no response '" << response << "'; it is left out of the file\n";
+      if (!envelope) blocks.push_back(std::move(block));
+      continue;
+    }
     for (const std::string& component : r.componentNames) {
       columns.push_back(
           RecorderOutput::Column::ofElement("e" + std::to_string(tag) + "_" + component, tag, response, component));
@@ -99,7 +101,9 @@ ElementRecorder::ElementRecorder(const Domain& domain, Spec spec, bool envelope)
     entries_.push_back({tag, &element, std::move(r)});
   }
 
-  if (entries_.empty()) {
+  // No element answers: OpenSees still writes the time column (-time) of
+  // an Element recorder, and nothing for an envelope.
+  if (entries_.empty() && envelope) {
     columns.clear();
     blocks.clear();
   }
@@ -141,7 +145,8 @@ void ElementRecorder::readValues(const Domain& domain, std::vector<double>& out)
 }
 
 void ElementRecorder::record(Domain& domain, double time) {
-  if (empty() || output_->closed() || !output_->due(time)) return;
+  // With -time, rows of the time alone when no element answers (OpenSees).
+  if ((empty() && !spec_.output.echoTime) || output_->closed() || !output_->due(time)) return;
   readValues(domain, values_);
   row_.clear();
   if (spec_.output.echoTime) row_.push_back(time);

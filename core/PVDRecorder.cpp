@@ -25,7 +25,9 @@ const char* const kResponseList = "disp, vel, accel, incrDisp, reaction, unbalan
 // VTK cell type numbers (vtkCellType.h).
 constexpr std::uint8_t kVtkVertex = 1;
 constexpr std::uint8_t kVtkLine = 3;
+constexpr std::uint8_t kVtkTriangle = 5;
 constexpr std::uint8_t kVtkQuad = 9;
+constexpr std::uint8_t kVtkTetra = 10;
 constexpr std::uint8_t kVtkHexahedron = 12;
 
 // Times in the .pvd and the TimeValue field: enough digits that distinct
@@ -219,6 +221,9 @@ bool PVDRecorder::cellKindOf(const std::string& className, CellKind& kind) {
       {"quad", CellKind::Quad},
       {"bbarQuad", CellKind::Quad},
       {"SSPquad", CellKind::Quad},
+      {"ShellMITC4", CellKind::Shell},
+      {"tri31", CellKind::Quad},
+      {"FourNodeTetrahedron", CellKind::Solid},
       {"elasticBeamColumn", CellKind::Beam},
       {"dispBeamColumn", CellKind::Beam},
       {"forceBeamColumn", CellKind::Beam},
@@ -370,7 +375,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
 
   // Solids first, then lines, then contact vertices, each by element tag
   // (readers such as meshio group consecutive cells of one type).
-  std::vector<Cell> solids, quads, lines, contacts;
+  std::vector<Cell> solids, quads, shells, lines, contacts;
   for (const auto& [tag, element] : domain.elements()) {
     CellKind kind;
     // Classes by name, and any element that says it is a point (vertexNode).
@@ -384,21 +389,28 @@ void PVDRecorder::updateTopology(Domain& domain) {
     cell.kind = kind;
     switch (kind) {
       case CellKind::Solid:
-        if (nodes.size() != 8) continue;
+        if (nodes.size() != 8 && nodes.size() != 4) continue;
         // The bricks' order (bottom face counterclockwise seen from above,
-        // then the top face, node 5 above node 1) is VTK_HEXAHEDRON's.
-        cell.vtkType = kVtkHexahedron;
+        // then the top face, node 5 above node 1) is VTK_HEXAHEDRON's; a
+        // tetrahedron of positive volume is a VTK_TETRA as it stands.
+        cell.vtkType = nodes.size() == 8 ? kVtkHexahedron : kVtkTetra;
         cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
                           element->setResponse({"plasticStrains"}), element->setResponse({"equivalentPlasticStrains"})};
         solids.push_back(std::move(cell));
         break;
       case CellKind::Quad:
-        if (nodes.size() != 4) continue;
-        // The quads' nodes run counterclockwise, as VTK_QUAD's.
-        cell.vtkType = kVtkQuad;
+        if (nodes.size() != 4 && nodes.size() != 3) continue;
+        // The quads' and triangles' nodes run counterclockwise, as VTK_QUAD's and VTK_TRIANGLE's.
+        cell.vtkType = nodes.size() == 4 ? kVtkQuad : kVtkTriangle;
         cell.responses = {element->setResponse({"stresses"}), element->setResponse({"strains"}),
                           element->setResponse({"plasticStrains"}), element->setResponse({"equivalentPlasticStrains"})};
         quads.push_back(std::move(cell));
+        break;
+      case CellKind::Shell:
+        if (nodes.size() != 4) continue;
+        cell.vtkType = kVtkQuad;
+        cell.responses = {element->setResponse({"stresses"})};
+        shells.push_back(std::move(cell));
         break;
       case CellKind::Beam:
       case CellKind::Truss:
@@ -422,7 +434,7 @@ void PVDRecorder::updateTopology(Domain& domain) {
       }
     }
   }
-  for (auto* group : {&solids, &quads, &lines, &contacts})
+  for (auto* group : {&solids, &quads, &shells, &lines, &contacts})
     for (Cell& c : *group) cells_.push_back(std::move(c));
 
   // Points: the nodes the cells use, by tag.
@@ -430,7 +442,8 @@ void PVDRecorder::updateTopology(Domain& domain) {
     const auto& nodes = c.element->nodes();
     switch (c.kind) {
       case CellKind::Solid:
-      case CellKind::Quad: return std::vector<const Node*>(nodes.begin(), nodes.end());
+      case CellKind::Quad:
+      case CellKind::Shell: return std::vector<const Node*>(nodes.begin(), nodes.end());
       case CellKind::Beam:
       case CellKind::Truss: return std::vector<const Node*>{nodes[0], nodes[1]};
       case CellKind::Contact: return std::vector<const Node*>{nodes[vertexOf(*c.element)]};
@@ -572,6 +585,21 @@ void PVDRecorder::writeGrid(Domain& domain, double time, const std::string& path
       }
       closeArray(out);
     }
+  }
+  if (has(CellKind::Shell)) {
+    // Shells: the mean over the Gauss points of the section forces per unit
+    // length in the element's frame (membrane, moments, shears).
+    static const std::vector<std::string> names = {"p11", "p22", "p12", "m11", "m22", "m12", "q1", "q2"};
+    openArray(out, "Float64", "shellForce", 8, names);
+    for (const Cell& c : cells_) {
+      Eigen::Matrix<double, 8, 1> mean = Eigen::Matrix<double, 8, 1>::Zero();
+      if (c.kind == CellKind::Shell && c.responses[0]) {
+        const Vector v = c.responses[0].value();
+        for (Eigen::Index p = 0; p + 8 <= v.size(); p += 8) mean += v.segment<8>(p) / (v.size() / 8);
+      }
+      appendTuple(out, mean, digits);
+    }
+    closeArray(out);
   }
   if (has(CellKind::Beam) || has(CellKind::Truss)) {
     static const std::vector<std::string> names = {"N_1", "Vy_1", "Vz_1", "T_1", "My_1", "Mz_1",

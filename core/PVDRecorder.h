@@ -64,7 +64,7 @@ class PVDRecorder : public Recorder {
   int recordCount() const { return recordCount_; }
 
   // What a written cell is; the cell array 'elementKind'.
-  enum class CellKind : int { Solid = 1, Beam = 2, Truss = 3, Contact = 4, Quad = 5 };
+  enum class CellKind : int { Solid = 1, Beam = 2, Truss = 3, Contact = 4, Quad = 5, Shell = 6 };
   // How elements of a class are drawn, or false for a class left out.
   static bool cellKindOf(const std::string& className, CellKind& kind);
 
@@ -102,7 +102,7 @@ class PVDRecorder : public Recorder {
   bool anyTopology_ = false;
   std::vector<const Node*> points_;  // ascending node tag
   std::vector<Cell> cells_;          // solids, quads, lines, contacts; each by element tag
-  std::array<bool, 6> haveKind_{};   // by CellKind
+  std::array<bool, 7> haveKind_{};   // by CellKind
   // incrDisp: each node's displacement at the previous record() call.
   std::map<int, Vector> previousDisp_;
 

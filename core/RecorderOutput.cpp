@@ -160,6 +160,10 @@ void RecorderOutput::writeBlock(const XmlBlock& b, int depth) {
   const std::string indent(4 * depth, ' ');
   file_ << indent << '<' << b.element;
   for (const auto& [name, value] : b.attributes) file_ << ' ' << name << "=\"" << xmlEscape(value) << '"';
+  if (b.responseTypes.empty() && b.children.empty()) {
+    file_ << "/>\n";  // an element without the response, as OpenSees writes it
+    return;
+  }
   file_ << ">\n";
   for (const std::string& r : b.responseTypes) {
     if (b.timeBeforeEach) writeBlock(timeBlock(), depth + 1);

@@ -11,7 +11,9 @@ namespace beamsolid {
 // so the section deformations are e(xi) = B(xi) v with, for each plane,
 // kappa = ((6 xi - 4) theta_i + (6 xi - 2) theta_j) / L, and
 // q = sum w L B^T s, kb = sum w L B^T ks B (default rule: Legendre).
-// Element loads enter as consistent (fixed-end) forces.
+// Element loads enter as consistent (fixed-end) forces. A shear section's
+// Vy, Vz stay unstrained (Hermite bending has no shear strain), as in
+// OpenSees and the 2D element.
 class DispBeamColumn3d : public SectionBeamColumn3d {
  public:
   DispBeamColumn3d(int tag, Definition&& definition);

@@ -1,5 +1,7 @@
 #include "elements/ElasticBeam2d.h"
 
+#include "elements/BeamRelease.h"
+
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Node.h"
@@ -34,16 +36,9 @@ void ElasticBeam2d::setDomain(Domain&) {
   const double kii = k * (4.0 + phi) / (1.0 + phi), kij = k * (2.0 - phi) / (1.0 + phi);
   kb_.setZero();
   kb_(0, 0) = p.E * p.A / L;
-  // A released end carries no moment: condensing it out leaves kii - kij^2/kii (3EI/L) at the other end.
-  switch (p.release) {
-    case 0:
-      kb_(1, 1) = kb_(2, 2) = kii;
-      kb_(1, 2) = kb_(2, 1) = kij;
-      break;
-    case 1: kb_(2, 2) = kii - kij * kij / kii; break;
-    case 2: kb_(1, 1) = kii - kij * kij / kii; break;
-    default: break;
-  }
+  kb_(1, 1) = kb_(2, 2) = kii;
+  kb_(1, 2) = kb_(2, 1) = kij;
+  BeamRelease::condense(kb_, 1, 2, p.release);
   initialStiff_ = transf_->initialGlobalStiffMatrix(kb_);
 
   // The 3D beam's mass restricted to the plane (ux, uy, rz at each end).
@@ -88,12 +83,7 @@ void ElasticBeam2d::addFixedEndForces(const BeamFixedEndForces& f) {
   // A released end's fixed-end moment is carried over to the other end
   // (half of it, the carry-over factor) or, with both released, dropped.
   double mi = f.momentI, mj = f.momentJ;
-  switch (properties_.release) {
-    case 1: mj -= 0.5 * mi; mi = 0.0; break;
-    case 2: mi -= 0.5 * mj; mj = 0.0; break;
-    case 3: mi = mj = 0.0; break;
-    default: break;
-  }
+  BeamRelease::carryOver(mi, mj, properties_.release);
   // With a released end the simple-support shears change: (Mi + Mj)/L
   // in basicToLocal accounts for it, since q0 holds the condensed moments.
   q0_[1] += mi;

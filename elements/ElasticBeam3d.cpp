@@ -1,6 +1,7 @@
 #include "elements/ElasticBeam3d.h"
 
 #include "elements/BeamFixedEndForces.h"
+#include "elements/BeamRelease.h"
 #include "elements/ElasticBeam2d.h"
 #include "elements/BeamMass.h"
 
@@ -8,6 +9,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "sections/ElasticSection3d.h"
 
 namespace beamsolid {
 
@@ -40,6 +42,8 @@ void ElasticBeam3d::setDomain(Domain&) {
   kb_(3, 3) = kb_(4, 4) = (4.0 + phiZ) / (1.0 + phiZ) * p.E * p.Iy / L;
   kb_(3, 4) = kb_(4, 3) = (2.0 - phiZ) / (1.0 + phiZ) * p.E * p.Iy / L;
   kb_(5, 5) = p.G * p.J / L;
+  BeamRelease::condense(kb_, 1, 2, p.releaseZ);
+  BeamRelease::condense(kb_, 3, 4, p.releaseY);
 
   initialStiff_ = transf_->initialGlobalStiffMatrix(kb_);
   formMass();
@@ -98,13 +102,16 @@ void ElasticBeam3d::addPlaneLoads(const BeamFixedEndForces& xy, const BeamFixedE
   q0_[0] += xy.basicAxial + xz.basicAxial;
   p0_[1] += xy.shearI;
   p0_[7] += xy.shearJ;
-  q0_[1] += xy.momentI;
-  q0_[2] += xy.momentJ;
+  double mzi = xy.momentI, mzj = xy.momentJ, myi = xz.momentI, myj = xz.momentJ;
+  BeamRelease::carryOver(mzi, mzj, properties_.releaseZ);
+  BeamRelease::carryOver(myi, myj, properties_.releaseY);
+  q0_[1] += mzi;
+  q0_[2] += mzj;
   p0_[2] += xz.shearI;
   p0_[8] += xz.shearJ;
   // theta_y = -w' flips the x-z plane's moments.
-  q0_[3] -= xz.momentI;
-  q0_[4] -= xz.momentJ;
+  q0_[3] -= myi;
+  q0_[4] -= myj;
 }
 
 bool ElasticBeam3d::acceptsLoad(ElementLoad::Type type) const {
@@ -194,6 +201,8 @@ void ElasticBeam3d::print(std::ostream& os) const {
      << ", A " << p.A << ", E " << p.E << ", G " << p.G << ", J " << p.J << ", Iy " << p.Iy << ", Iz " << p.Iz;
   if (p.massPerLength != 0.0)
     os << ", mass/length " << p.massPerLength << (p.consistentMass ? " (consistent)" : " (lumped)");
+  if (p.releaseZ) os << ", releasez " << p.releaseZ;
+  if (p.releaseY) os << ", releasey " << p.releaseY;
   os << ", geomTransf " << transf_->className() << ' ' << transf_->tag();
   if (length_ > 0.0) os << ", L " << length_;
   os << '\n';
@@ -229,22 +238,38 @@ std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
   if (numbers == 4)
     args.fail("the 2D form (A, E, Iz, transfTag) needs a 2D model (-ndm 2); in 3D give "
               "A, E, G, J, Iy, Iz, transfTag");
-  if (numbers == 2)
-    args.fail("the section form (secTag, transfTag) is not supported yet; give A, E, G, J, Iy, Iz, transfTag");
-  if (numbers != 7)
-    args.fail("expected A, E, G, J, Iy, Iz, transfTag (7 numbers) after the nodes, got " +
+  if (numbers != 7 && numbers != 2)
+    args.fail("expected A, E, G, J, Iy, Iz, transfTag (7 numbers) or secTag, transfTag (2) after the nodes, got " +
               std::to_string(numbers));
 
   ElasticBeam3d::Properties p;
-  struct Positive {
-    double* value;
-    const char* name;
-  };
-  for (const Positive& item : {Positive{&p.A, "A"}, Positive{&p.E, "E"}, Positive{&p.G, "G"},
-                               Positive{&p.J, "J"}, Positive{&p.Iy, "Iy"}, Positive{&p.Iz, "Iz"}}) {
-    const std::size_t at = args.position();
-    *item.value = args.nextDouble(item.name);
-    if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+  if (numbers == 2) {
+    // The section form: E, A, Iz, Iy, G, J of an Elastic section.
+    const int secTag = args.nextInt("secTag");
+    const BeamSection& section = domain.sections.get(secTag, args.context());
+    const auto* elastic = dynamic_cast<const ElasticSection3d*>(&section);
+    if (!elastic)
+      args.fail("section " + std::to_string(secTag) + " is a " + (section.ndm() == 3 ? "" : "2D ") +
+                section.className() + " section; the 3D elasticBeamColumn takes an Elastic section (E, A, Iz, Iy, "
+                "G, J) made in a 3D model");
+    const ElasticSection3d::Properties& s = elastic->properties();
+    p.E = s.E;
+    p.A = s.A;
+    p.Iz = s.Iz;
+    p.Iy = s.Iy;
+    p.G = s.G;
+    p.J = s.J;
+  } else {
+    struct Positive {
+      double* value;
+      const char* name;
+    };
+    for (const Positive& item : {Positive{&p.A, "A"}, Positive{&p.E, "E"}, Positive{&p.G, "G"},
+                                 Positive{&p.J, "J"}, Positive{&p.Iy, "Iy"}, Positive{&p.Iz, "Iz"}}) {
+      const std::size_t at = args.position();
+      *item.value = args.nextDouble(item.name);
+      if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
+    }
   }
   const int transfTag = args.nextInt("transfTag");
 
@@ -257,8 +282,15 @@ std::unique_ptr<Element> buildElasticBeam3d(CommandArgs& args, Domain& domain) {
       p.consistentMass = true;
     } else if (args.nextFlag("-lMass")) {
       // Lumped is the default; OpenSees accepts the flag and '-cMass' wins whatever the order.
+    } else if (args.nextIsString() && (*args.peekString() == "-releasez" || *args.peekString() == "-releasey")) {
+      const bool aboutZ = args.nextString("option") == "-releasez";
+      const std::size_t at = args.position();
+      int& code = aboutZ ? p.releaseZ : p.releaseY;
+      code = args.nextInt("releaseCode");
+      if (code < 0 || code > 3) args.failAt(at, "releaseCode", "0, 1 (I), 2 (J) or 3 (both)");
     } else if (args.nextIsString()) {
-      args.fail("unknown option '" + *args.peekString() + "' (expected '-mass', '-cMass' or '-lMass')");
+      args.fail("unknown option '" + *args.peekString() +
+                "' (expected '-mass', '-cMass', '-lMass', '-releasez' or '-releasey')");
     } else {
       args.expectEnd();
     }

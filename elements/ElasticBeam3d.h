@@ -9,11 +9,14 @@ namespace beamsolid {
 
 // Linear elastic 3D Euler-Bernoulli beam-column (elasticBeamColumn, 3D form):
 //   element('elasticBeamColumn', tag, iNode, jNode, A, E, G, J, Iy, Iz,
-//           transfTag, <'-mass', massPerLength>, <'-cMass'>)
+//           transfTag, <'-mass', massPerLength>, <'-cMass'>, <'-releasez', code>,
+//           <'-releasey', code>)
 // Basic stiffness EA/L, 4EI/L 2EI/L in both planes, GJ/L in the basic system
 // of CrdTransf.h; the transformation (Linear, PDelta, ...) does the rest.
 // Element loads (-beamUniform, -beamPoint) enter as fixed-end forces, so
 // resistingForce = K u - (equivalent nodal loads), as in OpenSees.
+// '-releasez'/'-releasey' 1 (I), 2 (J), 3 (both) release the moments about
+// local z/y (BeamRelease.h).
 class ElasticBeam3d : public Element {
  public:
   using Vector6 = CrdTransf::Vector6;
@@ -27,6 +30,7 @@ class ElasticBeam3d : public Element {
     bool torsionalInertia = true;  // m J / A about the axis (none in OpenSees' Timoshenko beam's lumped mass)
     double massPerLength = 0.0;
     bool consistentMass = false;
+    int releaseZ = 0, releaseY = 0;  // 0 none, 1 moment released at I, 2 at J, 3 both
   };
 
   ElasticBeam3d(int tag, int nodeI, int nodeJ, const Properties& properties, std::unique_ptr<CrdTransf> transf);

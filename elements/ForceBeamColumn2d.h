@@ -17,6 +17,11 @@ struct ForceBeamTraits2d {
   using SectionMatrix = SectionForceDeformation2d::Matrix;
   using Interpolation = SectionBeamColumn2d::Interpolation;
   static constexpr int kBasic = 3;
+  static const SectionVector& deformation(const Section& s) { return s.deformation(); }
+  static const SectionVector& force(const Section& s) { return s.force(); }
+  static const SectionMatrix& tangent(const Section& s) { return s.tangent(); }
+  static const SectionMatrix& initialTangent(const Section& s) { return s.initialTangent(); }
+  static void setTrialDeformation(Section& s, const SectionVector& e) { s.setTrialDeformation(e); }
 };
 
 class ForceBeamColumn2d : public SectionBeamColumn2d {

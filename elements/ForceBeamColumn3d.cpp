@@ -22,13 +22,34 @@ Eigen::Matrix<double, 4, 6> ForceBeamColumn3d::forceInterpolation(double xi) {
   return b;
 }
 
-void ForceBeamColumn3d::initializeState() {
-  std::vector<ForceBeamTraits3d::Interpolation> interpolation;
-  std::vector<double> weightLength;
-  for (std::size_t i = 0; i < sections_.size(); ++i) {
-    interpolation.push_back(forceInterpolation(xi_[i]));
-    weightLength.push_back(weights_[i] * length_);
+ForceBeamTraits3dShear::Interpolation ForceBeamColumn3d::forceInterpolation(const SectionForceDeformation& section,
+                                                                          double xi, double L) {
+  const int shear = section.numShear();
+  ForceBeamTraits3dShear::Interpolation b = ForceBeamTraits3dShear::Interpolation::Zero(4 + shear, 6);
+  b.topRows<4>() = forceInterpolation(xi);
+  for (int k = 0; k < shear; ++k) {
+    // V = dM/dx of the linear moment of the same plane.
+    const int first = section.shearCode(k) == SectionCode::Vy ? 1 : 3;
+    b(4 + k, first) = b(4 + k, first + 1) = 1.0 / L;
   }
+  return b;
+}
+
+void ForceBeamColumn3d::initializeState() {
+  shear_ = false;
+  for (const auto& s : sections_) shear_ = shear_ || s->numShear() > 0;
+  std::vector<double> weightLength;
+  for (std::size_t i = 0; i < sections_.size(); ++i) weightLength.push_back(weights_[i] * length_);
+  if (shear_) {
+    std::vector<ForceBeamTraits3dShear::Interpolation> interpolation;
+    for (std::size_t i = 0; i < sections_.size(); ++i)
+      interpolation.push_back(forceInterpolation(*sections_[i], xi_[i], length_));
+    initialBasicStiffness_ = shearState_.initialize(sections_, std::move(interpolation), std::move(weightLength),
+                                                    options().maxIterations, options().tolerance);
+    return;
+  }
+  std::vector<ForceBeamTraits3d::Interpolation> interpolation;
+  for (std::size_t i = 0; i < sections_.size(); ++i) interpolation.push_back(forceInterpolation(xi_[i]));
   initialBasicStiffness_ = state_.initialize(sections_, std::move(interpolation), std::move(weightLength),
                                              options().maxIterations, options().tolerance);
 }
@@ -36,13 +57,15 @@ void ForceBeamColumn3d::initializeState() {
 void ForceBeamColumn3d::solveState(const Vector6& v) {
   // As OpenSees, an element that cannot reach compatibility warns and keeps
   // the state of its last attempt; the global iterations go on from it.
-  if (!state_.update(v))
+  if (!withState([&](auto& state) { return state.update(v); }))
     std::cerr << "WARNING " << context() << ": element compatibility not reached (" << options().maxIterations
               << " iterations, tol " << options().tolerance << "); going on with the last state\n";
 }
 
 void ForceBeamColumn3d::ensureState() {
-  if (state_.loadsChanged()) solveState(state_.deformation());
+  withState([&](auto& state) {
+    if (state.loadsChanged()) solveState(state.deformation());
+  });
 }
 
 void ForceBeamColumn3d::update() {
@@ -51,24 +74,36 @@ void ForceBeamColumn3d::update() {
   // An unchanged v leaves the element as it is, as in OpenSees; new element
   // loads alone (as right after a load step is applied) wait for the next
   // change of v: the first residual of a step sees them through p0 only.
-  if (v == state_.deformation()) return;
+  if (withState([&](auto& state) { return v == state.deformation(); })) return;
   solveState(v);
 }
 
 // As OpenSees (and the 2D element), new element loads reach q at the next
 // state determination; until then only the basic system's reactions p0 follow them.
-ForceBeamColumn3d::Vector6 ForceBeamColumn3d::basicForce() { return state_.force(); }
+ForceBeamColumn3d::Vector6 ForceBeamColumn3d::basicForce() {
+  return withState([](auto& state) -> Vector6 { return state.force(); });
+}
 
-const ForceBeamColumn3d::Matrix6& ForceBeamColumn3d::basicStiffness() { return state_.stiffness(); }
+const ForceBeamColumn3d::Matrix6& ForceBeamColumn3d::basicStiffness() {
+  return withState([](auto& state) -> const Matrix6& { return state.stiffness(); });
+}
 
 ForceBeamColumn3d::Vector6 ForceBeamColumn3d::plasticDeformation() {
   // v minus the elastic deformations of the section forces b q + s_load:
   // an elastic element under element loads has none (as OpenSees).
   Vector6 elastic = Vector6::Zero();
-  for (int i = 0; i < numSections(); ++i) {
-    const Eigen::Matrix<double, 4, 6> b = forceInterpolation(xi_[i]);
-    elastic += weights_[i] * length_ * b.transpose() * state_.initialFlexibility(i) *
-               (b * state_.force() + state_.loadForces(std::size_t(i)));
+  if (shear_) {
+    for (int i = 0; i < numSections(); ++i) {
+      const auto b = forceInterpolation(*sections_[i], xi_[i], length_);
+      elastic += weights_[i] * length_ * b.transpose() * shearState_.initialFlexibility(i) *
+                 (b * shearState_.force() + shearState_.loadForces(std::size_t(i)));
+    }
+  } else {
+    for (int i = 0; i < numSections(); ++i) {
+      const Eigen::Matrix<double, 4, 6> b = forceInterpolation(xi_[i]);
+      elastic += weights_[i] * length_ * b.transpose() * state_.initialFlexibility(i) *
+                 (b * state_.force() + state_.loadForces(std::size_t(i)));
+    }
   }
   return basicDeformation() - elastic;
 }
@@ -77,24 +112,24 @@ void ForceBeamColumn3d::commitState() {
   ensureState();
   transf_->commitState();
   for (auto& s : sections_) s->commitState();
-  state_.commit();
+  withState([](auto& state) { state.commit(); });
 }
 
 void ForceBeamColumn3d::revertToLastCommit() {
   transf_->revertToLastCommit();
   for (auto& s : sections_) s->revertToLastCommit();
-  state_.revertToLastCommit();
+  withState([](auto& state) { state.revertToLastCommit(); });
 }
 
 void ForceBeamColumn3d::revertToStart() {
   transf_->revertToStart();
   for (auto& s : sections_) s->revertToStart();
-  state_.revertToStart();
+  withState([](auto& state) { state.revertToStart(); });
 }
 
 void ForceBeamColumn3d::zeroLoad() {
   zeroLoadReactions();
-  state_.zeroLoad();
+  withState([](auto& state) { state.zeroLoad(); });
 }
 
 void ForceBeamColumn3d::addLoad(const ElementLoad& load, double factor) {
@@ -102,21 +137,31 @@ void ForceBeamColumn3d::addLoad(const ElementLoad& load, double factor) {
   addLoadReactions(l);
   const double L = length_;
   // Section forces of the simply supported basic system (axially held at I):
-  // Mz = -w x (L - x) / 2 for a load along +y (v'' < 0), My = +w x (L - x) / 2 along +z.
-  for (int i = 0; i < numSections(); ++i) {
-    const double x = xi_[i] * L;
-    Vector4& s = state_.changeLoadForces(std::size_t(i));
-    if (l.uniform) {
-      s[0] += l.wx * (L - x);
-      s[1] -= 0.5 * l.wy * x * (L - x);
-      s[2] += 0.5 * l.wz * x * (L - x);
-    } else {
-      const double influence = x <= l.a ? x * (L - l.a) / L : l.a * (L - x) / L;
-      if (x < l.a) s[0] += l.px;
-      s[1] -= l.py * influence;
-      s[2] += l.pz * influence;
+  // Mz = -w x (L - x) / 2 for a load along +y (v'' < 0), My = +w x (L - x) / 2
+  // along +z, and the shears V = dM/dx.
+  withState([&](auto& state) {
+    for (int i = 0; i < numSections(); ++i) {
+      const double x = xi_[i] * L;
+      auto& s = state.changeLoadForces(std::size_t(i));
+      if (l.uniform) {
+        s[0] += l.wx * (L - x);
+        s[1] -= 0.5 * l.wy * x * (L - x);
+        s[2] += 0.5 * l.wz * x * (L - x);
+      } else {
+        const double influence = x <= l.a ? x * (L - l.a) / L : l.a * (L - x) / L;
+        if (x < l.a) s[0] += l.px;
+        s[1] -= l.py * influence;
+        s[2] += l.pz * influence;
+      }
+      for (int k = 0; k < static_cast<int>(s.size()) - 4; ++k) {
+        const bool y = sections_[i]->shearCode(k) == SectionCode::Vy;
+        // d(influence)/dx: (L - a)/L before the load, -a/L after it.
+        const double slope = l.uniform ? 0.0 : (x <= l.a ? (L - l.a) / L : -l.a / L);
+        if (y) s[4 + k] += l.uniform ? l.wy * (x - 0.5 * L) : -l.py * slope;
+        else s[4 + k] += l.uniform ? l.wz * (0.5 * L - x) : l.pz * slope;
+      }
     }
-  }
+  });
 }
 
 namespace {

@@ -11,7 +11,10 @@ namespace beamsolid {
 // given basic deformations v, find basic forces q and section deformations e
 // with equilibrium s(e) = b q + s_p (s_p: element loads) and compatibility
 // v = sum w L b^T e, by the Newton iterations of Spacone, Filippou and Taucer
-// (1996) in the form of Neuenhofer and Filippou (1997).
+// (1996) in the form of Neuenhofer and Filippou (1997). The Traits say how
+// a section's deformations, forces and tangents are read and set
+// (Traits::force(section), ...), so one element can see more of a section
+// than another (the 3D shear components).
 //
 // The order of the steps, the stopping rule and the fallbacks follow what
 // OpenSees 3.7 does (found by black-box runs of OpenSeesPy, see
@@ -56,7 +59,7 @@ class ForceBeamCompatibility {
     loadForces_.clear();
     BasicMatrix F = BasicMatrix::Zero();
     for (std::size_t i = 0; i < n; ++i) {
-      const SectionMatrix k0 = sections[i]->initialTangent();
+      const SectionMatrix k0 = Traits::initialTangent(*sections[i]);
       SectionMatrix f0 = k0;
       invert(k0, k0, f0);
       initialFlexibility_.push_back(f0);
@@ -159,13 +162,13 @@ class ForceBeamCompatibility {
   };
   Snapshot snapshot() const {
     Snapshot state{q_, kb_, {}};
-    for (const auto& s : *sections_) state.e.push_back(s->deformation());
+    for (const auto& s : *sections_) state.e.push_back(Traits::deformation(*s));
     return state;
   }
   void restore(const Snapshot& state) {
     q_ = state.q;
     kb_ = state.kb;
-    for (std::size_t i = 0; i < sections_->size(); ++i) (*sections_)[i]->setTrialDeformation(state.e[i]);
+    for (std::size_t i = 0; i < sections_->size(); ++i) Traits::setTrialDeformation(*(*sections_)[i], state.e[i]);
   }
   // The tangent attempt, then (from the same start) the initial-flexibility one.
   bool attempts(const BasicVector& v, const BasicVector& dv, const Snapshot& start) {
@@ -182,7 +185,7 @@ class ForceBeamCompatibility {
     Sections& sections = *sections_;
     const std::size_t n = sections.size();
     if (!initialFlexibility)
-      for (std::size_t i = 0; i < n; ++i) invert(sections[i]->tangent(), sections[i]->initialTangent(), flexibility_[i]);
+      for (std::size_t i = 0; i < n; ++i) invert(Traits::tangent(*sections[i]), Traits::initialTangent(*sections[i]), flexibility_[i]);
     BasicVector dq = k * dv;
     for (int iteration = 0; iteration < maxIterations; ++iteration) {
       ++iterations_;
@@ -192,12 +195,12 @@ class ForceBeamCompatibility {
       for (std::size_t i = 0; i < n; ++i) {
         Section& s = *sections[i];
         const SectionMatrix& fS = initialFlexibility ? initialFlexibility_[i] : flexibility_[i];
-        const SectionVector unbalance = b_[i] * q_ + loadForces_[i] - s.force();
-        s.setTrialDeformation(s.deformation() + fS * unbalance);
-        invert(s.tangent(), s.initialTangent(), flexibility_[i]);
-        const SectionVector residual = b_[i] * q_ + loadForces_[i] - s.force();
+        const SectionVector unbalance = b_[i] * q_ + loadForces_[i] - Traits::force(s);
+        Traits::setTrialDeformation(s, Traits::deformation(s) + fS * unbalance);
+        invert(Traits::tangent(s), Traits::initialTangent(s), flexibility_[i]);
+        const SectionVector residual = b_[i] * q_ + loadForces_[i] - Traits::force(s);
         F.noalias() += wL_[i] * b_[i].transpose() * flexibility_[i] * b_[i];
-        compatible.noalias() += wL_[i] * b_[i].transpose() * (s.deformation() + flexibility_[i] * residual);
+        compatible.noalias() += wL_[i] * b_[i].transpose() * (Traits::deformation(s) + flexibility_[i] * residual);
       }
       const Eigen::LDLT<BasicMatrix> flexibility(F);
       if (flexibility.info() != Eigen::Success) return false;

@@ -3,15 +3,16 @@
 
 namespace beamsolid {
 
-// A solid integrated on the full 2^Dim Gauss rule with one material point
+// A solid integrated on its cell's full Gauss rule (2^Dim points of a
+// MultilinearCell, the centroid of a SimplexCell) with one material point
 // per Gauss point: strain = B_g u, K = sum_g w_g B_g^T D_g B_g,
 // f = sum_g w_g B_g^T sigma_g, w_g = thick det J_g. The formulations differ
-// only in B_g (StdBrick, BbarBrick, FourNodeQuad, BbarQuad); `Strains` is
-// the size of the material's strain vector.
-template <int Dim, int Strains>
-class GaussPointSolid : public SolidElement<Dim> {
+// only in B_g (StdBrick, BbarBrick, FourNodeQuad, BbarQuad, Tri31,
+// FourNodeTetrahedron); `Strains` is the size of the material's strain vector.
+template <int Dim, int Strains, class CellType = MultilinearCell<Dim>>
+class GaussPointSolid : public SolidElement<Dim, CellType> {
  public:
-  using Base = SolidElement<Dim>;
+  using Base = SolidElement<Dim, CellType>;
   using typename Base::NodalMatrix;
   using typename Base::NodalVector;
   static constexpr int kGaussPoints = Base::Cell::kGaussPoints;

@@ -28,6 +28,14 @@ class MultilinearCell {
   using Jacobian = Eigen::Matrix<double, Dim, Dim>;
   using NodalScalars = Eigen::Matrix<double, kNodes, kNodes>;
 
+  // What to check when the Jacobian is not positive.
+  static const char* orderHint() {
+    return Dim == 3 ? "check the node order (bottom face 1-4 counterclockwise seen from above, top face 5-8 "
+                      "above 1-4) and that the element is not degenerate"
+                    : "give the nodes counterclockwise and check that the quadrilateral is convex and not "
+                      "degenerate";
+  }
+
   // Natural coordinates (each +-1) of node a.
   static Point nodeNatural(int a) {
     static constexpr double square[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};

@@ -20,8 +20,8 @@ bool parseIndex(const std::string& s, int& out) {
 
 }  // namespace
 
-template <int Dim>
-SolidElement<Dim>::SolidElement(int tag, const std::array<int, kNodes>& nodeTags, const NDMaterial& material,
+template <int Dim, class C>
+SolidElement<Dim, C>::SolidElement(int tag, const std::array<int, kNodes>& nodeTags, const NDMaterial& material,
                                 const std::string& kind, int points, double thickness, const BodyForce& bodyForce)
     : Element(tag, std::vector<int>(nodeTags.begin(), nodeTags.end())),
       kind_(kind),
@@ -35,15 +35,15 @@ SolidElement<Dim>::SolidElement(int tag, const std::array<int, kNodes>& nodeTags
   }
 }
 
-template <int Dim>
-bool SolidElement<Dim>::hasConstantTangent() const {
+template <int Dim, class C>
+bool SolidElement<Dim, C>::hasConstantTangent() const {
   for (const auto& m : materials_)
     if (!m->isLinear()) return false;
   return true;
 }
 
-template <int Dim>
-void SolidElement<Dim>::setDomain(Domain&) {
+template <int Dim, class C>
+void SolidElement<Dim, C>::setDomain(Domain&) {
   constantTangentValid_ = false;
   for (Node* n : nodes()) {
     if constexpr (Dim == 3) {
@@ -60,31 +60,27 @@ void SolidElement<Dim>::setDomain(Domain&) {
   }
   typename Cell::NodeCoordinates X;
   for (int a = 0; a < kNodes; ++a) X.row(a) = nodes()[a]->crd().template head<Dim>().transpose();
-  const char* hint = Dim == 3 ? "check the node order (bottom face 1-4 counterclockwise seen from above, top face 5-8 "
-                                "above 1-4) and that the element is not degenerate"
-                              : "give the nodes counterclockwise and check that the quadrilateral is convex and not "
-                                "degenerate";
-  cell_ = Cell(X, context(), hint);
+  cell_ = Cell(X, context(), Cell::orderHint());
   prepare();
   // Material state follows the current node displacements (nodes may already be displaced).
   update();
 }
 
-template <int Dim>
-void SolidElement<Dim>::update() {
+template <int Dim, class C>
+void SolidElement<Dim, C>::update() {
   for (int a = 0; a < kNodes; ++a)
     displacement_.template segment<Dim>(Dim * a) = nodes()[a]->trialDisp().template head<Dim>();
   setMaterialStrains(displacement_);
 }
 
-template <int Dim>
-typename SolidElement<Dim>::NodalMatrix& SolidElement<Dim>::buffer(std::unique_ptr<NodalMatrix>& m) {
+template <int Dim, class C>
+typename SolidElement<Dim, C>::NodalMatrix& SolidElement<Dim, C>::buffer(std::unique_ptr<NodalMatrix>& m) {
   if (!m) m = std::make_unique<NodalMatrix>();
   return *m;
 }
 
-template <int Dim>
-MatrixView SolidElement<Dim>::tangentStiff() {
+template <int Dim, class C>
+MatrixView SolidElement<Dim, C>::tangentStiff() {
   // A linear material's tangent never changes: form it once.
   if (constantTangentValid_) return viewOf(*constantTangent_);
   if (hasConstantTangent()) {
@@ -96,14 +92,14 @@ MatrixView SolidElement<Dim>::tangentStiff() {
   return viewOf(*stiffness_);
 }
 
-template <int Dim>
-MatrixView SolidElement<Dim>::initialStiff() {
+template <int Dim, class C>
+MatrixView SolidElement<Dim, C>::initialStiff() {
   formStiffness(true, buffer(stiffness_));
   return viewOf(*stiffness_);
 }
 
-template <int Dim>
-typename SolidElement<Dim>::NodalVector SolidElement<Dim>::appliedLoad() const {
+template <int Dim, class C>
+typename SolidElement<Dim, C>::NodalVector SolidElement<Dim, C>::appliedLoad() const {
   NodalVector p;
   const BodyForce& perVolume = bodyForceFromLoads_ ? loadedBodyForce_ : bodyForce_;
   for (int a = 0; a < kNodes; ++a)
@@ -111,15 +107,15 @@ typename SolidElement<Dim>::NodalVector SolidElement<Dim>::appliedLoad() const {
   return p;
 }
 
-template <int Dim>
-VectorView SolidElement<Dim>::resistingForce() {
+template <int Dim, class C>
+VectorView SolidElement<Dim, C>::resistingForce() {
   formInternalForce(force_);
   force_ -= appliedLoad();
   return viewOf(force_);
 }
 
-template <int Dim>
-MatrixView SolidElement<Dim>::massMatrix() {
+template <int Dim, class C>
+MatrixView SolidElement<Dim, C>::massMatrix() {
   NodalMatrix& mass = buffer(mass_);
   mass.setZero();
   const double rho = density();
@@ -144,23 +140,23 @@ MatrixView SolidElement<Dim>::massMatrix() {
   return viewOf(mass);
 }
 
-template <int Dim>
-void SolidElement<Dim>::commitState() {
+template <int Dim, class C>
+void SolidElement<Dim, C>::commitState() {
   for (auto& m : materials_) m->commitState();
 }
 
-template <int Dim>
-void SolidElement<Dim>::revertToLastCommit() {
+template <int Dim, class C>
+void SolidElement<Dim, C>::revertToLastCommit() {
   for (auto& m : materials_) m->revertToLastCommit();
 }
 
-template <int Dim>
-void SolidElement<Dim>::revertToStart() {
+template <int Dim, class C>
+void SolidElement<Dim, C>::revertToStart() {
   for (auto& m : materials_) m->revertToStart();
 }
 
-template <int Dim>
-void SolidElement<Dim>::addLoad(const ElementLoad& load, double factor) {
+template <int Dim, class C>
+void SolidElement<Dim, C>::addLoad(const ElementLoad& load, double factor) {
   if (load.type != ElementLoad::Type::SelfWeight) {
     Element::addLoad(load, factor);
     return;
@@ -173,14 +169,14 @@ void SolidElement<Dim>::addLoad(const ElementLoad& load, double factor) {
   for (int i = 0; i < Dim; ++i) loadedBodyForce_(i) += factor * load.values[i] * bodyForce_(i);
 }
 
-template <int Dim>
-void SolidElement<Dim>::zeroLoad() {
+template <int Dim, class C>
+void SolidElement<Dim, C>::zeroLoad() {
   loadedBodyForce_.setZero();
   bodyForceFromLoads_ = false;
 }
 
-template <int Dim>
-std::vector<std::string> SolidElement<Dim>::pointComponentNames(bool stress) const {
+template <int Dim, class C>
+std::vector<std::string> SolidElement<Dim, C>::pointComponentNames(bool stress) const {
   const Eigen::Index size = materials_[0]->stress().size();
   if (size == 6) {
     static const char* const stresses[6] = {"sigma11", "sigma22", "sigma33", "sigma12", "sigma23", "sigma13"};
@@ -192,8 +188,8 @@ std::vector<std::string> SolidElement<Dim>::pointComponentNames(bool stress) con
   return Response::numberedNames(stress ? "sigma" : "eps", static_cast<int>(size));
 }
 
-template <int Dim>
-Vector SolidElement<Dim>::pointVectors(bool stress) const {
+template <int Dim, class C>
+Vector SolidElement<Dim, C>::pointVectors(bool stress) const {
   const Eigen::Index size = materials_[0]->stress().size();
   Vector out(size * materialPoints());
   for (int p = 0; p < materialPoints(); ++p)
@@ -201,8 +197,8 @@ Vector SolidElement<Dim>::pointVectors(bool stress) const {
   return out;
 }
 
-template <int Dim>
-Response SolidElement<Dim>::setResponse(const std::vector<std::string>& args) {
+template <int Dim, class C>
+Response SolidElement<Dim, C>::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
   const std::string& what = args[0];
   const bool stresses = what == "stresses" || what == "stress";
@@ -242,21 +238,21 @@ Response SolidElement<Dim>::setResponse(const std::vector<std::string>& args) {
   return {};
 }
 
-template <int Dim>
-void SolidElement<Dim>::materialsChanged() {
+template <int Dim, class C>
+void SolidElement<Dim, C>::materialsChanged() {
   constantTangentValid_ = false;
 }
 
-template <int Dim>
-bool SolidElement<Dim>::setParameter(const std::vector<std::string>& args, double value) {
+template <int Dim, class C>
+bool SolidElement<Dim, C>::setParameter(const std::vector<std::string>& args, double value) {
   bool accepted = false;
   for (auto& m : materials_) accepted = m->setParameter(args, value) || accepted;
   if (accepted) materialsChanged();
   return accepted;
 }
 
-template <int Dim>
-void SolidElement<Dim>::updateMaterialStage(int materialTag, int stage) {
+template <int Dim, class C>
+void SolidElement<Dim, C>::updateMaterialStage(int materialTag, int stage) {
   bool any = false;
   for (auto& m : materials_)
     if (m->tag() == materialTag) {
@@ -266,14 +262,14 @@ void SolidElement<Dim>::updateMaterialStage(int materialTag, int stage) {
   if (any) materialsChanged();
 }
 
-template <int Dim>
-void SolidElement<Dim>::initialStateAnalysis(bool on) {
+template <int Dim, class C>
+void SolidElement<Dim, C>::initialStateAnalysis(bool on) {
   for (auto& m : materials_) m->initialStateAnalysis(on);
   materialsChanged();
 }
 
-template <int Dim>
-void SolidElement<Dim>::print(std::ostream& os) const {
+template <int Dim, class C>
+void SolidElement<Dim, C>::print(std::ostream& os) const {
   os << "Element " << tag() << " type " << className() << " nodes";
   for (int t : nodeTags()) os << ' ' << t;
   if (Dim == 2) os << " thick " << thickness_;
@@ -283,6 +279,8 @@ void SolidElement<Dim>::print(std::ostream& os) const {
 
 template class SolidElement<2>;
 template class SolidElement<3>;
+template class SolidElement<2, SimplexCell<2>>;
+template class SolidElement<3, SimplexCell<3>>;
 
 namespace solidargs {
 
@@ -295,6 +293,7 @@ std::array<int, N> nodeTags(CommandArgs& args) {
   }
   return tags;
 }
+template std::array<int, 3> nodeTags<3>(CommandArgs&);
 template std::array<int, 4> nodeTags<4>(CommandArgs&);
 template std::array<int, 8> nodeTags<8>(CommandArgs&);
 

@@ -8,6 +8,7 @@
 #include "core/Domain.h"
 #include "elements/Element.h"
 #include "elements/MultilinearCell.h"
+#include "elements/SimplexCell.h"
 #include "materials/nd/NDMaterial.h"
 
 namespace beamsolid {
@@ -29,10 +30,13 @@ namespace beamsolid {
 // loads). While eleLoad '-selfWeight' (fx, fy, <fz>) loads are active the
 // body force is sum over them of factor * (fx b1, fy b2, fz b3), replacing b
 // (OpenSees' behaviour, checked against OpenSeesPy 3.7.1).
-template <int Dim>
+//
+// `CellType` is the reference geometry: MultilinearCell (quadrilaterals and
+// hexahedra) or SimplexCell (tri31, FourNodeTetrahedron).
+template <int Dim, class CellType = MultilinearCell<Dim>>
 class SolidElement : public Element {
  public:
-  using Cell = MultilinearCell<Dim>;
+  using Cell = CellType;
   static constexpr int kNodes = Cell::kNodes;
   static constexpr int kDofs = Dim * kNodes;
   using NodalVector = Eigen::Matrix<double, kDofs, 1>;
@@ -159,17 +163,28 @@ const NDMaterial& material(CommandArgs& args, Domain& domain, const std::string&
 const NDMaterial& materialOfTag(CommandArgs& args, Domain& domain, int matTag, const std::string& kind,
                                 const std::string& forWhat);
 
-// element(type, tag, *8 nodes, matTag, <b1, b2, b3>): what every brick reads.
-template <class Brick>
-std::unique_ptr<Element> brick(CommandArgs& args, Domain& domain, const std::string& type) {
+// element(type, tag, *N nodes, matTag, <b1, b2, b3>): what every 3D solid
+// reads (the bricks, FourNodeTetrahedron).
+template <class Solid, std::size_t N>
+std::unique_ptr<Element> solid(CommandArgs& args, Domain& domain, const std::string& type) {
   const int tag = args.nextInt("eleTag");
   args.setContext("element " + type + " " + std::to_string(tag));
-  const auto tags = nodeTags<8>(args);
+  // Up to N + 1 numbers: the missing node or matTag is named when read.
+  const std::size_t numbers = args.remaining();
+  if (numbers > N + 1 && numbers != N + 4)
+    args.fail("expected " + std::to_string(N) + " node tags, matTag and 0 or 3 body force components (b1 b2 b3), got " +
+              std::to_string(numbers) + " arguments (" + type + " has exactly " + std::to_string(N) + " nodes)");
+  const auto tags = nodeTags<N>(args);
   const NDMaterial& m = material(args, domain, "ThreeDimensional", "a solid element");
   const std::vector<double> b = bodyForce(args, 3, "b1 b2 b3");
   args.expectEnd();
   const Vector3 force = b.empty() ? Vector3::Zero() : Vector3(b[0], b[1], b[2]);
-  return std::make_unique<Brick>(tag, tags, m, force);
+  return std::make_unique<Solid>(tag, tags, m, force);
+}
+
+template <class Brick>
+std::unique_ptr<Element> brick(CommandArgs& args, Domain& domain, const std::string& type) {
+  return solid<Brick, 8>(args, domain, type);
 }
 }  // namespace solidargs
 

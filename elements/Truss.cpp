@@ -45,7 +45,7 @@ void Truss::setDomain(Domain&) {
   const int n = numDOF();
   force_.setZero(n);
   stiffness_.setZero(n, n);
-  mass_.setZero(n, n);
+  mass_.resize(0, 0);
   update();
 }
 
@@ -120,7 +120,7 @@ VectorView Truss::resistingForce() {
 }
 
 MatrixView Truss::massMatrix() {
-  mass_.setZero();
+  mass_.setZero(numDOF(), numDOF());
   const double total = rho_ * initialLength_;
   if (total != 0.0) {
     const double diagonal = consistentMass_ ? total / 3.0 : total / 2.0;

@@ -1,6 +1,5 @@
 #include "elements/ZeroLength.h"
 
-#include <charconv>
 #include <sstream>
 
 #include "core/CommandArgs.h"
@@ -8,6 +7,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "elements/SpringResponses.h"
 
 namespace beamsolid {
 
@@ -190,26 +190,13 @@ Response ZeroLength::setResponse(const std::vector<std::string>& args) {
               return v;
             }};
   }
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::string name(1, "xyz"[axis]);
-    if (what == name + "axis" || what == name + "local")
-      return {{name + "_X", name + "_Y", name + "_Z"},
-              [this, axis] { return Vector(localAxes_.row(axis).transpose()); }};
-  }
-  if (what == "material" && args.size() >= 2) {
-    int k = 0;
-    const std::string& s = args[1];
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), k);
-    if (ec != std::errc() || ptr != s.data() + s.size() || k < 1 || k > numSprings()) return {};
-    return springs_[k - 1].material->setResponse(std::vector<std::string>(args.begin() + 2, args.end()));
-  }
+  if (Response r = SpringResponses::axis(what, localAxes_)) return r;
+  if (Response r = SpringResponses::material(args, springs_)) return r;
   return {};
 }
 
 bool ZeroLength::setParameter(const std::vector<std::string>& args, double value) {
-  bool accepted = false;
-  for (Spring& s : springs_) accepted = s.material->setParameter(args, value) || accepted;
-  return accepted;
+  return SpringResponses::setParameter(springs_, args, value);
 }
 
 void ZeroLength::print(std::ostream& os) const {

@@ -15,7 +15,7 @@ ZeroLengthSection::ZeroLengthSection(int tag, int iNode, int jNode, const BeamSe
   section3d_ = dynamic_cast<SectionForceDeformation*>(section_.get());
   section2d_ = dynamic_cast<SectionForceDeformation2d*>(section_.get());
   if (section2d_) codes_ = section2d_->codes();
-  else if (section3d_) codes_ = {SectionCode::P, SectionCode::Mz, SectionCode::My, SectionCode::T};
+  else if (section3d_) codes_ = section3d_->responseCodes();  // shear (Vy, Vz) in the section's own order
   else throw OpenSeesError(context() + ": " + section.context() + " is neither a 2D nor a 3D beam section");
 }
 
@@ -54,16 +54,19 @@ void ZeroLengthSection::setDomain(Domain&) {
 
 Vector ZeroLengthSection::sectionDeformation() const {
   if (section2d_) return Vector(section2d_->deformation());
+  if (section3d_->numShear() > 0) return section3d_->responseDeformation();
   return Vector(section3d_->deformation());
 }
 
 Vector ZeroLengthSection::sectionForce() const {
   if (section2d_) return Vector(section2d_->force());
+  if (section3d_->numShear() > 0) return section3d_->responseForce();
   return Vector(section3d_->force());
 }
 
 Matrix ZeroLengthSection::sectionTangent(bool initial) const {
   if (section2d_) return Matrix(initial ? section2d_->initialTangent() : section2d_->tangent());
+  if (section3d_->numShear() > 0) return section3d_->responseTangent(initial);
   return Matrix(initial ? section3d_->initialTangent() : section3d_->tangent());
 }
 
@@ -76,6 +79,8 @@ void ZeroLengthSection::update() {
   if (section2d_) {
     const SectionForceDeformation2d::Vector e = gradient_ * displacement_;
     section2d_->setTrialDeformation(e);
+  } else if (section3d_->numShear() > 0) {
+    section3d_->setTrialResponseDeformation(gradient_ * displacement_);
   } else {
     const SectionForceDeformation::Vector4 e = gradient_ * displacement_;
     section3d_->setTrialDeformation(e);

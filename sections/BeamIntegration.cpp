@@ -107,17 +107,24 @@ void BeamIntegration::newtonCotes(int n, std::vector<double>& xi, std::vector<do
   weights = momentWeights(xi);
 }
 
-std::vector<double> BeamIntegration::momentWeights(const std::vector<double>& xi) {
+std::vector<double> BeamIntegration::momentWeights(const std::vector<double>& xi, const std::vector<double>& given) {
   const int n = static_cast<int>(xi.size());
-  // Weights integrate 1, x, ..., x^(n-1) exactly on [0, 1].
-  Eigen::MatrixXd V(n, n);
-  Eigen::VectorXd moments(n);
-  for (int k = 0; k < n; ++k) {
-    for (int i = 0; i < n; ++i) V(k, i) = std::pow(xi[i], k);
+  const int nc = static_cast<int>(given.size());
+  const int m = n - nc;
+  if (m == 0) return given;
+  // The free weights integrate 1, x, ..., x^(m-1) exactly on [0, 1] together
+  // with the given ones (the method of undetermined coefficients).
+  Eigen::MatrixXd V(m, m);
+  Eigen::VectorXd moments(m);
+  for (int k = 0; k < m; ++k) {
+    for (int i = 0; i < m; ++i) V(k, i) = std::pow(xi[nc + i], k);
     moments[k] = 1.0 / (k + 1);
+    for (int i = 0; i < nc; ++i) moments[k] -= std::pow(xi[i], k) * given[i];
   }
-  const Eigen::VectorXd w = V.colPivHouseholderQr().solve(moments);
-  return std::vector<double>(w.data(), w.data() + n);
+  const Eigen::VectorXd free = V.colPivHouseholderQr().solve(moments);
+  std::vector<double> w(given);
+  w.insert(w.end(), free.data(), free.data() + m);
+  return w;
 }
 
 std::vector<double> BeamIntegration::midDistanceWeights(const std::vector<double>& xi) {
@@ -166,6 +173,7 @@ const char* BeamIntegration::ruleName(Rule rule) {
     case Rule::MidDistance: return "MidDistance";
     case Rule::HingeMidpoint: return "HingeMidpoint";
     case Rule::HingeEndpoint: return "HingeEndpoint";
+    case Rule::LowOrder: return "LowOrder";
   }
   return "?";
 }
@@ -193,7 +201,8 @@ int BeamIntegration::maxPoints(Rule rule) {
     case Rule::HingeMidpoint:
     case Rule::HingeEndpoint: return 4;
     // FixedLocation's Vandermonde system is ill-conditioned beyond this.
-    case Rule::FixedLocation: return 12;
+    case Rule::FixedLocation:
+    case Rule::LowOrder: return 12;
     default: return 30;
   }
 }
@@ -204,7 +213,7 @@ BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTag
   if (isHinge(rule))
     throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
                         ": a hinge rule needs secI, lpI, secJ, lpJ, secE");
-  if (rule == Rule::UserDefined || rule == Rule::FixedLocation || rule == Rule::MidDistance)
+  if (hasGivenLocations(rule))
     throw OpenSeesError(std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag) +
                         ": needs the locations of its points");
   if (n < minPoints(rule) || n > maxPoints(rule))
@@ -221,7 +230,7 @@ BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTag
     : tag_(tag), rule_(rule), sectionTags_(std::move(sectionTags)), givenXi_(std::move(locations)) {
   const std::string context = std::string("beamIntegration ") + ruleName(rule) + " " + std::to_string(tag);
   const std::size_t n = sectionTags_.size();
-  if (rule != Rule::UserDefined && rule != Rule::FixedLocation && rule != Rule::MidDistance)
+  if (!hasGivenLocations(rule))
     throw OpenSeesError(context + ": not a rule with given locations");
   if (n < 1 || static_cast<int>(n) > maxPoints(rule))
     throw OpenSeesError(context + ": the number of points must lie in 1.." + std::to_string(maxPoints(rule)));
@@ -234,13 +243,17 @@ BeamIntegration::BeamIntegration(int tag, Rule rule, std::vector<int> sectionTag
     for (double w : weights)
       if (!std::isfinite(w)) throw OpenSeesError(context + ": wts must be finite numbers");
     givenWeights_ = std::move(weights);
-  } else if (rule == Rule::FixedLocation) {
-    for (std::size_t i = 0; i < n; ++i)
+  } else if (rule == Rule::FixedLocation || rule == Rule::LowOrder) {
+    if (weights.size() > n) throw OpenSeesError(context + ": at most one weight per section");
+    for (double w : weights)
+      if (!std::isfinite(w)) throw OpenSeesError(context + ": wts must be finite numbers");
+    // Only the points with free weights must be distinct.
+    for (std::size_t i = weights.size(); i < n; ++i)
       for (std::size_t j = i + 1; j < n; ++j)
         if (givenXi_[i] == givenXi_[j])
-          throw OpenSeesError(context + ": two points at the same location " + std::to_string(givenXi_[i]) +
-                              " (the weights are undetermined)");
-    givenWeights_ = momentWeights(givenXi_);
+          throw OpenSeesError(context + ": two points without a given weight at the same location " +
+                              std::to_string(givenXi_[i]) + " (their weights are undetermined)");
+    givenWeights_ = momentWeights(givenXi_, weights);
   } else {
     for (std::size_t i = 1; i < n; ++i)
       if (givenXi_[i] < givenXi_[i - 1])
@@ -279,6 +292,7 @@ void BeamIntegration::pointsAndWeights(double length, std::vector<double>& xi, s
     case Rule::UserDefined:
     case Rule::FixedLocation:
     case Rule::MidDistance:
+    case Rule::LowOrder:
       xi = givenXi_;
       weights = givenWeights_;
       return;
@@ -333,18 +347,19 @@ std::unique_ptr<BeamIntegration> buildRule(CommandArgs& args, Domain& domain, Be
     for (int s : {h.sectionI, h.sectionJ, h.sectionInterior}) domain.sections.get(s, args.context());
     return std::make_unique<BeamIntegration>(tag, rule, h);
   }
-  if (rule == BeamIntegration::Rule::UserDefined || rule == BeamIntegration::Rule::FixedLocation ||
-      rule == BeamIntegration::Rule::MidDistance) {
+  if (BeamIntegration::hasGivenLocations(rule)) {
     const std::size_t at = args.position();
     const int n = args.nextInt("N");
     if (n < 1 || n > BeamIntegration::maxPoints(rule))
       args.failAt(at, "N", "a number of points in 1.." + std::to_string(BeamIntegration::maxPoints(rule)));
     const bool withWeights = rule == BeamIntegration::Rule::UserDefined;
+    const bool someWeights = rule == BeamIntegration::Rule::LowOrder;
     const std::size_t expected = static_cast<std::size_t>(n) * (withWeights ? 3 : 2);
-    if (args.remaining() != expected)
-      args.fail(std::string("expected N, *secTags, *locs") + (withWeights ? ", *wts" : "") + ": " +
-                std::to_string(expected) + " numbers after N = " + std::to_string(n) + ", got " +
-                std::to_string(args.remaining()));
+    const std::size_t got = args.remaining();
+    if (someWeights ? (got < expected || got > expected + n) : got != expected)
+      args.fail(std::string("expected N, *secTags, *locs") + (withWeights ? ", *wts" : someWeights ? ", *wts (0 to N of them)" : "") +
+                ": " + (someWeights ? std::to_string(expected) + " to " + std::to_string(expected + n) : std::to_string(expected)) +
+                " numbers after N = " + std::to_string(n) + ", got " + std::to_string(got));
     std::vector<int> sectionTags;
     std::vector<double> locs, wts;
     for (int i = 0; i < n; ++i) sectionTags.push_back(args.nextInt("secTag"));
@@ -353,8 +368,7 @@ std::unique_ptr<BeamIntegration> buildRule(CommandArgs& args, Domain& domain, Be
       locs.push_back(args.nextDouble("loc"));
       if (!(locs.back() >= 0.0 && locs.back() <= 1.0)) args.failAt(li, "loc", "a location in [0, 1]");
     }
-    if (withWeights)
-      for (int i = 0; i < n; ++i) wts.push_back(args.nextDouble("wt"));
+    while (!args.done()) wts.push_back(args.nextDouble("wt"));
     args.expectEnd();
     for (int s : sectionTags) domain.sections.get(s, args.context());
     return std::make_unique<BeamIntegration>(tag, rule, std::move(sectionTags), std::move(locs), std::move(wts));
@@ -391,7 +405,7 @@ void registerBeamIntegrations(Registry& r) {
   using Rule = BeamIntegration::Rule;
   for (Rule rule : {Rule::Lobatto, Rule::Legendre, Rule::Radau, Rule::NewtonCotes, Rule::HingeRadau,
                     Rule::HingeRadauTwo, Rule::Trapezoidal, Rule::CompositeSimpson, Rule::UserDefined,
-                    Rule::FixedLocation, Rule::MidDistance, Rule::HingeMidpoint, Rule::HingeEndpoint})
+                    Rule::FixedLocation, Rule::MidDistance, Rule::HingeMidpoint, Rule::HingeEndpoint, Rule::LowOrder})
     r.beamIntegrations.add(BeamIntegration::ruleName(rule),
                            [rule](CommandArgs& args, Domain& domain) { return buildRule(args, domain, rule); });
 }

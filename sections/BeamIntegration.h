@@ -28,6 +28,11 @@ namespace beamsolid {
 //                    exactly (the Vandermonde system of the manual)
 //   'MidDistance'    the given locations, each weighted by the distance between
 //                    the midpoints to its neighbours (ends at 0 and 1)
+//   'LowOrder'       the given locations and the first Nc <= N weights (Nc from
+//                    the count of wts); the other N - Nc weights integrate
+//                    1, x, ..., x^(N-Nc-1) exactly with the given ones (Kidarsa,
+//                    Scott and Higgins 2008): FixedLocation at Nc = 0,
+//                    UserDefined at Nc = N
 // and with equally spaced points, (rule, tag, secTag, N) or (rule, tag, N, *secTags):
 //   'Trapezoidal'       both ends, weights 1/(2(N-1)) at the ends, 1/(N-1) inside
 //   'CompositeSimpson'  both ends, N odd, Simpson's rule on each pair of intervals
@@ -36,7 +41,7 @@ class BeamIntegration {
   enum class Rule {
     Lobatto, Legendre, Radau, NewtonCotes, HingeRadau, HingeRadauTwo,
     Trapezoidal, CompositeSimpson, UserDefined, FixedLocation, MidDistance,
-    HingeMidpoint, HingeEndpoint
+    HingeMidpoint, HingeEndpoint, LowOrder
   };
   // The plastic hinge rules, built from (secI, lpI, secJ, lpJ, secE).
   static bool isHinge(Rule rule) {
@@ -53,8 +58,9 @@ class BeamIntegration {
 
   // A Gauss or Newton-Cotes rule with one section tag per point.
   BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags);
-  // A rule with given locations (UserDefined, FixedLocation, MidDistance);
-  // `weights` only for UserDefined. Throws OpenSeesError for bad input.
+  // A rule with given locations (UserDefined, FixedLocation, MidDistance,
+  // LowOrder); `weights` for UserDefined (N) and LowOrder (the first Nc).
+  // Throws OpenSeesError for bad input.
   BeamIntegration(int tag, Rule rule, std::vector<int> sectionTags, std::vector<double> locations,
                   std::vector<double> weights);
   // A hinge rule (HingeRadau, HingeRadauTwo, HingeMidpoint, HingeEndpoint).
@@ -78,8 +84,13 @@ class BeamIntegration {
   static void newtonCotes(int n, std::vector<double>& xi, std::vector<double>& weights);
   static void trapezoidal(int n, std::vector<double>& xi, std::vector<double>& weights);
   static void compositeSimpson(int n, std::vector<double>& xi, std::vector<double>& weights);
-  // Weights that integrate 1, x, ..., x^(n-1) exactly on [0, 1] at points xi.
-  static std::vector<double> momentWeights(const std::vector<double>& xi);
+  // Weights that integrate 1, x, ..., x^(m-1) exactly on [0, 1] at points xi,
+  // the first `given.size()` of them given and the other m found.
+  static std::vector<double> momentWeights(const std::vector<double>& xi, const std::vector<double>& given = {});
+  static bool hasGivenLocations(Rule rule) {
+    return rule == Rule::UserDefined || rule == Rule::FixedLocation || rule == Rule::MidDistance ||
+           rule == Rule::LowOrder;
+  }
   static std::vector<double> midDistanceWeights(const std::vector<double>& xi);
 
   static const char* ruleName(Rule rule);

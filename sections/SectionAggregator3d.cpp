@@ -1,5 +1,7 @@
 #include "sections/SectionAggregator3d.h"
 
+#include <algorithm>
+
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
 #include "core/Registry.h"
@@ -34,6 +36,48 @@ SectionAggregator3d::SectionAggregator3d(const SectionAggregator3d& other)
       initialTangent_(other.initialTangent_) {
   for (int k = 0; k < 4; ++k)
     if (other.materials_[k]) materials_[k] = other.materials_[k]->clone();
+  for (const ShearMaterial& m : other.shear_) shear_.push_back({m.code, m.material->clone()});
+}
+
+void SectionAggregator3d::addShear(SectionCode code, std::unique_ptr<UniaxialMaterial> material) {
+  shear_.push_back({code, std::move(material)});
+}
+
+SectionCode SectionAggregator3d::shearCode(int k) const {
+  if (k < 0 || k >= numShear()) return SectionForceDeformation::shearCode(k);
+  return shear_[std::size_t(k)].code;
+}
+
+void SectionAggregator3d::setTrialShear(const ShearVector& gamma) {
+  if (gamma.size() != numShear()) {
+    SectionForceDeformation::setTrialShear(gamma);
+    return;
+  }
+  for (int k = 0; k < numShear(); ++k) shear_[std::size_t(k)].material->setTrialStrain(gamma[k]);
+}
+
+SectionAggregator3d::ShearVector SectionAggregator3d::shearDeformation() const {
+  ShearVector out(numShear());
+  for (int k = 0; k < numShear(); ++k) out[k] = shear_[std::size_t(k)].material->strain();
+  return out;
+}
+
+SectionAggregator3d::ShearVector SectionAggregator3d::shearForce() const {
+  ShearVector out(numShear());
+  for (int k = 0; k < numShear(); ++k) out[k] = shear_[std::size_t(k)].material->stress();
+  return out;
+}
+
+SectionAggregator3d::ShearVector SectionAggregator3d::shearTangent() const {
+  ShearVector out(numShear());
+  for (int k = 0; k < numShear(); ++k) out[k] = shear_[std::size_t(k)].material->tangent();
+  return out;
+}
+
+SectionAggregator3d::ShearVector SectionAggregator3d::shearInitialTangent() const {
+  ShearVector out(numShear());
+  for (int k = 0; k < numShear(); ++k) out[k] = shear_[std::size_t(k)].material->initialTangent();
+  return out;
 }
 
 std::unique_ptr<SectionForceDeformation> SectionAggregator3d::clone() const {
@@ -69,6 +113,7 @@ void SectionAggregator3d::commitState() {
   if (section_) section_->commitState();
   for (auto& m : materials_)
     if (m) m->commitState();
+  for (auto& m : shear_) m.material->commitState();
   committedDeformation_ = deformation_;
 }
 
@@ -76,6 +121,7 @@ void SectionAggregator3d::revertToLastCommit() {
   if (section_) section_->revertToLastCommit();
   for (auto& m : materials_)
     if (m) m->revertToLastCommit();
+  for (auto& m : shear_) m.material->revertToLastCommit();
   deformation_ = committedDeformation_;
   assemble(false);
 }
@@ -84,6 +130,7 @@ void SectionAggregator3d::revertToStart() {
   if (section_) section_->revertToStart();
   for (auto& m : materials_)
     if (m) m->revertToStart();
+  for (auto& m : shear_) m.material->revertToStart();
   deformation_.setZero();
   committedDeformation_.setZero();
   assemble(false);
@@ -99,6 +146,7 @@ void SectionAggregator3d::print(std::ostream& os) const {
   static const char* const names[4] = {"P", "Mz", "My", "T"};
   for (int c = 0; c < 4; ++c)
     if (materials_[c]) os << ' ' << names[c] << " (" << materials_[c]->tag() << ')';
+  for (const ShearMaterial& m : shear_) os << ' ' << sectionCodeName(m.code) << " (" << m.material->tag() << ')';
   if (section_) os << ", section " << section_->className() << ' ' << section_->tag();
   os << '\n';
 }
@@ -112,11 +160,15 @@ std::unique_ptr<BeamSection> buildSectionAggregator(CommandArgs& args, Domain& d
   if (domain.spaceDim() != 3) args.fail("Aggregator needs a 2D or 3D model (-ndm 2 or 3)");
   std::array<std::unique_ptr<UniaxialMaterial>, 4> materials;
   std::unique_ptr<SectionForceDeformation> section;
+  std::vector<std::pair<SectionCode, std::unique_ptr<UniaxialMaterial>>> shear;
   int given = 0;
   while (!args.done()) {
     if (args.nextFlag("-section")) {
       const int secTag = args.nextInt("secTag");
       section = SectionForceDeformation::of(domain.sections.get(secTag, args.context()), args.context()).clone();
+      if (section->numShear() > 0)
+        args.fail("'-section' " + std::to_string(secTag) +
+                  " is shear-deformable; aggregating it is not supported (give its shear by Vy, Vz materials)");
       args.expectEnd();
       break;
     }
@@ -126,18 +178,22 @@ std::unique_ptr<BeamSection> buildSectionAggregator(CommandArgs& args, Domain& d
     const std::size_t at = args.position();
     const std::string name = args.nextString("code");
     const auto code = parseSectionCode(name);
-    if (!code) args.failAt(at, "code", "one of P, Mz, My, T, got '" + name + "'");
+    if (!code) args.failAt(at, "code", "one of P, Mz, My, T, Vy, Vz, got '" + name + "'");
     const int c = SectionAggregator3d::componentOf(*code);
-    if (c < 0)
-      args.failAt(at, "code", "one of P, Mz, My, T: shear ('" + name + "') is not supported in 3D sections");
-    if (materials[c]) args.failAt(at, "code", std::string("a code not given before ('") + name + "' is given twice)");
-    materials[c] = domain.uniaxialMaterials.get(matTag, args.context()).clone();
+    const bool repeated = c >= 0 ? materials[c] != nullptr
+                                 : std::any_of(shear.begin(), shear.end(), [&](const auto& m) { return m.first == *code; });
+    if (repeated) args.failAt(at, "code", std::string("a code not given before ('") + name + "' is given twice)");
+    auto material = domain.uniaxialMaterials.get(matTag, args.context()).clone();
+    if (c >= 0) materials[c] = std::move(material);
+    else shear.emplace_back(*code, std::move(material));
     ++given;
   }
   if (given == 0) args.fail("expected at least one matTag, code pair");
-  if (!section && given < 4)
+  if (!section && std::any_of(materials.begin(), materials.end(), [](const auto& m) { return !m; }))
     args.fail("without '-section' a 3D Aggregator needs materials for all of P, Mz, My and T");
-  return std::make_unique<SectionAggregator3d>(tag, std::move(section), std::move(materials));
+  auto aggregator = std::make_unique<SectionAggregator3d>(tag, std::move(section), std::move(materials));
+  for (auto& [code, material] : shear) aggregator->addShear(code, std::move(material));
+  return aggregator;
 }
 
 void registerSectionAggregator(Registry& r) { r.sections.add("Aggregator", &buildSectionAggregator); }

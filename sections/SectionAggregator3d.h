@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "materials/uniaxial/UniaxialMaterial.h"
 #include "sections/SectionCode.h"
@@ -15,7 +16,10 @@ namespace beamsolid {
 // GJ); without it the materials must give all of P, Mz, My and T. OpenSees
 // appends the materials instead, which differs only when a code repeats one
 // of the section's (its torsion then acts in series in a force-based
-// element). Vy and Vz need a shear-deformable 3D element and are refused.
+// element). Vy and Vz (each at most once) are appended after [P, Mz, My, T]
+// in the order given, as OpenSees reports them: shear components for a
+// forceBeamColumn (see SectionForceDeformation::numShear). A '-section'
+// that is itself shear-deformable is refused.
 class SectionAggregator3d : public SectionForceDeformation {
  public:
   SectionAggregator3d(int tag, std::unique_ptr<SectionForceDeformation> section,
@@ -35,6 +39,17 @@ class SectionAggregator3d : public SectionForceDeformation {
   const Matrix4& tangent() const override { return tangent_; }
   const Matrix4& initialTangent() const override { return initialTangent_; }
 
+  int numShear() const override { return static_cast<int>(shear_.size()); }
+  SectionCode shearCode(int k) const override;
+  void setTrialShear(const ShearVector& gamma) override;
+  ShearVector shearDeformation() const override;
+  ShearVector shearForce() const override;
+  ShearVector shearTangent() const override;
+  ShearVector shearInitialTangent() const override;
+
+  // Adds a material for Vy or Vz after the others (the command's order).
+  void addShear(SectionCode code, std::unique_ptr<UniaxialMaterial> material);
+
   void commitState() override;
   void revertToLastCommit() override;
   void revertToStart() override;
@@ -50,6 +65,11 @@ class SectionAggregator3d : public SectionForceDeformation {
   std::array<std::unique_ptr<UniaxialMaterial>, 4> materials_;
   Vector4 deformation_ = Vector4::Zero(), committedDeformation_ = Vector4::Zero(), force_ = Vector4::Zero();
   Matrix4 tangent_ = Matrix4::Zero(), initialTangent_ = Matrix4::Zero();
+  struct ShearMaterial {
+    SectionCode code;
+    std::unique_ptr<UniaxialMaterial> material;
+  };
+  std::vector<ShearMaterial> shear_;
 };
 
 }  // namespace beamsolid

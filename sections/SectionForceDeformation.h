@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sections/BeamSection.h"
+#include "sections/SectionCode.h"
 
 namespace beamsolid {
 
@@ -40,10 +41,46 @@ class SectionForceDeformation : public BeamSection {
   virtual const Matrix4& tangent() const = 0;
   virtual const Matrix4& initialTangent() const = 0;
 
-  // 'force'/'forces' (P, Mz, My, T), 'deformation'/'deformations',
-  // 'forceAndDeformation', 'stiffness' (16, row by row); an empty Response
-  // when the arguments name nothing this section has.
+  // Shear-deformable sections (section('Elastic', ..., alphaY, alphaZ), an
+  // Aggregator with Vy/Vz) carry up to two shear components besides
+  // [P, Mz, My, T]: shear strains gammaY/gammaZ in, Vy/Vz out. Each is
+  // uncoupled from the other components and from the other shear (true of
+  // both sections), so its tangent is one number. The 4-component interface
+  // above leaves the shear state as it is: an element that does not model
+  // shear (dispBeamColumn, as OpenSees') leaves it unstrained. All other
+  // sections keep the defaults: no shear, nothing to pay.
+  static constexpr int kMaxShear = 2;
+  using ShearVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxShear, 1>;
+  virtual int numShear() const { return 0; }
+  // Vy or Vz, for k < numShear().
+  virtual SectionCode shearCode(int k) const;
+  virtual void setTrialShear(const ShearVector& gamma);
+  virtual ShearVector shearDeformation() const { return {}; }
+  virtual ShearVector shearForce() const { return {}; }
+  // d(V_k)/d(gamma_k), current and initial.
+  virtual ShearVector shearTangent() const { return {}; }
+  virtual ShearVector shearInitialTangent() const { return {}; }
+  // All components in the order OpenSees reports them (the section's
+  // responses): by default [P, Mz, My, T] then the shear codes in order.
+  virtual std::vector<SectionCode> responseCodes() const;
+  // Deformations, forces and tangent of all components in responseCodes()
+  // order (for elements that take the section's own order, zeroLengthSection).
+  Vector responseDeformation() const { return responseValues(false); }
+  Vector responseForce() const { return responseValues(true); }
+  Matrix responseTangent(bool initial) const;
+  void setTrialResponseDeformation(const Vector& e);
+
+  // 'force'/'forces' (P, Mz, My, T, then any shear in responseCodes() order),
+  // 'deformation'/'deformations', 'forceAndDeformation', 'stiffness'
+  // (order x order, row by row); an empty Response when the arguments name
+  // nothing this section has.
   Response setResponse(const std::vector<std::string>& args) override;
+
+ private:
+  // Forces (or deformations) in responseCodes() order.
+  Vector responseValues(bool forces) const;
+  // Where each of responseCodes() is in [P, Mz, My, T, shear 0, shear 1].
+  std::vector<int> responsePositions() const;
 };
 
 }  // namespace beamsolid

@@ -9,14 +9,17 @@ namespace beamsolid {
 WFSection2d::WFSection2d(int tag, const UniaxialMaterial& material, const Dimensions& w)
     : FiberSection2d(tag), dimensions_(w) {
   const double webHeight = w.d - 2.0 * w.tf;
-  const double webStrip = webHeight / w.webFibers;
-  const double flangeStrip = w.tf / w.flangeFibers;
+  // Nfw or Nff = 0 leaves the web or the flanges out, as OpenSees does.
+  const double webStrip = w.webFibers > 0 ? webHeight / w.webFibers : 0.0;
+  const double flangeStrip = w.flangeFibers > 0 ? w.tf / w.flangeFibers : 0.0;
+  // tf = 0: flanges of no area carry nothing; they get no fibers.
+  const int flangeFibers = w.tf > 0.0 ? w.flangeFibers : 0;
   // Fibers run from the top of the section down (top flange, web, bottom
   // flange): OpenSees numbers them so, and 'fiber $i' responses use that order.
-  for (int k = 0; k < w.flangeFibers; ++k)
+  for (int k = 0; k < flangeFibers; ++k)
     addFiber(material, 0.5 * w.d - (k + 0.5) * flangeStrip, w.bf * flangeStrip);
   for (int k = 0; k < w.webFibers; ++k) addFiber(material, 0.5 * webHeight - (k + 0.5) * webStrip, w.tw * webStrip);
-  for (int k = 0; k < w.flangeFibers; ++k)
+  for (int k = 0; k < flangeFibers; ++k)
     addFiber(material, -0.5 * webHeight - (k + 0.5) * flangeStrip, w.bf * flangeStrip);
 }
 
@@ -31,24 +34,30 @@ std::unique_ptr<BeamSection> buildWFSection2d(CommandArgs& args, Domain& domain)
   const int matTag = args.nextInt("matTag");
   const UniaxialMaterial& material = domain.uniaxialMaterials.get(matTag, args.context());
   WFSection2d::Dimensions w;
-  struct Positive {
+  struct Dimension {
     double* value;
     const char* name;
   };
-  for (const Positive& item : {Positive{&w.d, "d"}, Positive{&w.tw, "tw"}, Positive{&w.bf, "bf"}, Positive{&w.tf, "tf"}}) {
+  for (const Dimension& item : {Dimension{&w.d, "d"}, Dimension{&w.tw, "tw"}, Dimension{&w.bf, "bf"}}) {
     const std::size_t at = args.position();
     *item.value = args.nextDouble(item.name);
     if (!(*item.value > 0.0)) args.failAt(at, item.name, "a positive number");
   }
+  // tf = 0 (a web alone) is allowed, as in OpenSees.
   std::size_t at = args.position();
+  w.tf = args.nextDouble("tf");
+  if (!(w.tf >= 0.0)) args.failAt(at, "tf", "a number >= 0");
+  at = args.position();
   w.webFibers = args.nextInt("Nfw");
-  if (w.webFibers < 1 || w.webFibers > 100000) args.failAt(at, "Nfw", "an integer in 1..100000");
+  if (w.webFibers < 0 || w.webFibers > 100000) args.failAt(at, "Nfw", "an integer in 0..100000");
   at = args.position();
   w.flangeFibers = args.nextInt("Nff");
-  if (w.flangeFibers < 1 || w.flangeFibers > 100000) args.failAt(at, "Nff", "an integer in 1..100000");
+  if (w.flangeFibers < 0 || w.flangeFibers > 100000) args.failAt(at, "Nff", "an integer in 0..100000");
   args.expectEnd();
-  if (!(2.0 * w.tf < w.d)) args.fail("the flanges (2 tf = " + std::to_string(2.0 * w.tf) + ") leave no web in d = " +
-                                     std::to_string(w.d));
+  if (w.webFibers + (w.tf > 0.0 ? w.flangeFibers : 0) == 0)
+    args.fail("Nfw = 0 with no flanges (Nff = 0 or tf = 0) leaves the section without fibers");
+  if (!(2.0 * w.tf <= w.d)) args.fail("the flanges (2 tf = " + std::to_string(2.0 * w.tf) + ") are deeper than d = " +
+                                      std::to_string(w.d));
   return std::make_unique<WFSection2d>(tag, material, w);
 }
 

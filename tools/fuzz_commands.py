@@ -111,6 +111,9 @@ TEMPLATES = [
     ("nodeBounds", ()), ("getFixedNodes", ()), ("getFixedDOFs", (1,)), ("getConstrainedNodes", ()),
     ("getRetainedNodes", (3,)), ("nodeResponse", (2, 1, 1)), ("setNodeCoord", (13, 1, 2.0)),
     ("setNodeDisp", (2, 1, 0.01, "-commit")), ("domainChange", ()), ("numIter", ()),
+    ("element", ("FourNodeTetrahedron", 14, 8, 5, 7, 12, 1, 0.0, 0.0, -1.0)),
+    ("element", ("twoNodeLink", 15, 2, 3, "-mat", 1, 2, "-dir", 1, 5, "-pDelta", 0.2, 0.2, 0.3, 0.3, "-mass", 1.0)),
+    ("element", ("twoNodeLink", 16, 3, 4, "-mat", 1, "-dir", 2, "-orient", 0.0, 0.0, 1.0, "-shearDist", 0.3, 0.6)),
 ]
 
 # The 2D model of build_2d() (nodes 1-4 with ndf 3 in a frame, 5-9 with ndf 2
@@ -134,6 +137,8 @@ TEMPLATES_2D = [
     ("element", ("quad", 8, 5, 6, 7, 8, 0.1, "PlaneStress", 1)), ("element", ("truss", 9, 6, 9, 1.0, 1)),
     ("element", ("corotTruss", 10, 7, 9, 1.0, 1)), ("element", ("zeroLength", 11, 3, 4, "-mat", 1, 1, "-dir", 1, 3)),
     ("element", ("zeroLengthSection", 12, 3, 4, 1)),
+    ("element", ("tri31", 13, 5, 6, 7, 1.0, "PlaneStress", 1, 0.1, 1.0, 0.0, -1.0)),
+    ("element", ("twoNodeLink", 14, 3, 4, "-mat", 1, 1, "-dir", 2, 3, "-shearDist", 0.3, "-doRayleigh")),
     ("load", (3, 1.0, 0.0, 0.0)), ("load", (7, 0.0, -1.0)), ("sp", (6, 1, 0.01)),
     ("eleLoad", ("-ele", 1, "-type", "-beamUniform", -1.0)), ("eleLoad", ("-ele", 7, "-type", "-selfWeight", 0.0, -1.0)),
     ("block2D", (2, 2, 1, 100, "quad", 1.0, "PlaneStrain", 1, 1, 0.0, 0.0, 2, 1.0, 0.0, 3, 1.0, 1.0, 4, 0.0, 1.0)),

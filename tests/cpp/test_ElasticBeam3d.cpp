@@ -523,7 +523,7 @@ TEST(ElasticBeam3d, CommandAndSetupErrorsAreClear) {
             "after model('basic', '-ndm', 3, '-ndf', 6))");
   EXPECT_NE(build({2LL, 1LL, 2LL, 1.0, 1.0, 1.0, 1LL}).find("the 2D form (A, E, Iz, transfTag) needs a 2D model (-ndm 2)"),
             std::string::npos);
-  EXPECT_NE(build({2LL, 1LL, 2LL, 5LL, 1LL}).find("the section form"), std::string::npos);
+  EXPECT_NE(build({2LL, 1LL, 2LL, 5LL, 1LL}).find("section 5 does not exist"), std::string::npos);
   EXPECT_NE(build({2LL, 1LL, 2LL, 1.0, 1.0, 1.0}).find("expected A, E, G, J, Iy, Iz, transfTag (7 numbers)"),
             std::string::npos);
   EXPECT_EQ(build({2LL, 1LL, 2LL, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1LL}),

@@ -1,9 +1,9 @@
-"""The beamIntegration rules UserDefined, FixedLocation, MidDistance,
+"""The beamIntegration rules UserDefined, FixedLocation, MidDistance, LowOrder,
 Trapezoidal, CompositeSimpson, HingeMidpoint and HingeEndpoint: their points and weights from the
 documented formulas, and an elastic forceBeamColumn cantilever whose tip
 flexibility is the rule's sum of (L - x_i)^2 w_i L / EI (exactly L^3/(3 EI)
-for rules exact for quadratics: FixedLocation with 3 or more points,
-CompositeSimpson). Tolerance 1e-10 relative.
+for rules exact for quadratics: FixedLocation with 3 or more points, LowOrder
+with N - Nc >= 3, CompositeSimpson). Tolerance 1e-10 relative.
 """
 import pytest
 
@@ -56,6 +56,16 @@ CASES = [
      [0.0, 0.2, 0.5, 0.8, 1.0], [0.1, 0.25, 0.3, 0.25, 0.1], [1, 2, 2, 2, 1]),
     # Three points at 0, 1/2, 1: Simpson's weights.
     ("FixedLocation", (3, 1, 1, 1, 0.0, 0.5, 1.0), [0.0, 0.5, 1.0], [1 / 6, 2 / 3, 1 / 6], [1, 1, 1]),
+    # The manual's LowOrder example: w = 0.2 at 0 and 0.2 given; the other three integrate 1, x, x^2
+    # with them: w2 + w3 + w4 = 0.6, 0.5 w2 + 0.8 w3 + w4 = 0.46, 0.25 w2 + 0.64 w3 + w4 = 1/3 - 0.008,
+    # solved by hand.
+    ("LowOrder", (5, 1, 2, 2, 2, 1, 0.0, 0.2, 0.5, 0.8, 1.0, 0.2, 0.2),
+     [0.0, 0.2, 0.5, 0.8, 1.0], [0.2, 0.2, -34 / 225, 97 / 90, -49 / 150], [1, 2, 2, 2, 1]),
+    # Nc = 0 is FixedLocation (Simpson at 0, 1/2, 1), Nc = N is UserDefined.
+    ("LowOrder", (3, 1, 1, 1, 0.0, 0.5, 1.0), [0.0, 0.5, 1.0], [1 / 6, 2 / 3, 1 / 6], [1, 1, 1]),
+    ("LowOrder", (3, 1, 2, 1, 0.9, 0.5, 0.1, 0.3, 0.3, 0.4), [0.9, 0.5, 0.1], [0.3, 0.3, 0.4], [1, 2, 1]),
+    # One weight given at 0.9, the others integrate 1 and x: w1 + w2 = 0.7, 0.5 w1 + 0.1 w2 = 0.5 - 0.27.
+    ("LowOrder", (3, 1, 2, 1, 0.9, 0.5, 0.1, 0.3), [0.9, 0.5, 0.1], [0.3, 0.4, 0.3], [1, 2, 1]),
     ("Trapezoidal", (1, 4), [0, 1 / 3, 2 / 3, 1], [1 / 6, 1 / 3, 1 / 3, 1 / 6], [1, 1, 1, 1]),
     ("Trapezoidal", (3, 1, 2, 1), [0, 0.5, 1], [0.25, 0.5, 0.25], [1, 2, 1]),
     ("CompositeSimpson", (1, 5), [0, 0.25, 0.5, 0.75, 1], [1 / 12, 1 / 3, 1 / 6, 1 / 3, 1 / 12], [1] * 5),
@@ -82,6 +92,7 @@ def test_points_weights_and_tip_deflection(model, rule, args, xi, w, secs):
 @pytest.mark.parametrize("rule, args", [
     ("FixedLocation", (3, 1, 1, 1, 0.1, 0.45, 0.8)),
     ("FixedLocation", (4, 1, 1, 1, 1, 0.0, 0.2, 0.7, 1.0)),
+    ("LowOrder", (5, 1, 1, 1, 1, 1, 0.0, 0.2, 0.5, 0.8, 1.0, 0.2, 0.2)),
     ("CompositeSimpson", (1, 7)),
 ])
 def test_rules_exact_for_quadratics_give_the_exact_cantilever(model, rule, args):
@@ -94,6 +105,9 @@ def test_rules_exact_for_quadratics_give_the_exact_cantilever(model, rule, args)
     ("UserDefined", (2, 1, 1, 0.2, 1.8, 0.5, 0.5), "loc"),
     ("FixedLocation", (2, 1, 1, 0.5, 0.5), "same location"),
     ("FixedLocation", (0,), "N"),
+    ("LowOrder", (2, 1, 1, 0.2, 0.8, 0.5, 0.5, 0.5), "*wts"),
+    ("LowOrder", (2, 1, 1, 0.2), "*locs"),
+    ("LowOrder", (3, 1, 1, 1, 0.0, 0.5, 0.5, 0.2), "same location"),
     ("MidDistance", (3, 1, 1, 1, 0.5, 0.2, 0.9), "ascending"),
     ("MidDistance", (2, 1, 9, 0.2, 0.8), "9"),
     ("CompositeSimpson", (1, 4), "odd"),

@@ -350,20 +350,46 @@ def test_2d_section_command_errors(ops):
         ops.section("Aggregator", 4, 1, "Q")
     with pytest.raises(beamsolid.OpenSeesError, match=r"section Aggregator 5.*Mz is given twice"):
         ops.section("Aggregator", 5, 1, "Mz", 1, "Mz")
-    with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 6.*tf.*positive"):
+    with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 6.*tf.*>= 0"):
         ops.section("WFSection2d", 6, 1, 10.0, 1.0, 6.0, -2.0, 3, 2)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 6.*Nff.*0\.\.100000"):
+        ops.section("WFSection2d", 6, 1, 10.0, 1.0, 6.0, 2.0, 3, -1)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 6.*Nfw = 0.*without fibers"):
+        ops.section("WFSection2d", 6, 1, 10.0, 1.0, 6.0, 2.0, 0, 0)
     with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 7.*uniaxialMaterial 9 does not exist"):
         ops.section("WFSection2d", 7, 9, 10.0, 1.0, 6.0, 2.0, 3, 2)
     with pytest.raises(beamsolid.OpenSeesError, match=r"section Elastic 8: expected E, A, Iz.*got 6 \(the 3D form"):
         ops.section("Elastic", 8, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0)
     ops.section("Elastic", 9, 29000.0, 20.0, 800.0, 11200.0, 0.8)
     ops.model("basic", "-ndm", 3, "-ndf", 6)
-    with pytest.raises(beamsolid.OpenSeesError, match=r"section Aggregator 10.*shear.*not supported"):
+    # Vy is a 3D code now (shear component); the 2D section is what is wrong.
+    with pytest.raises(beamsolid.OpenSeesError, match=r"section Aggregator 10.*section Elastic 9 is a 2D section"):
         ops.section("Aggregator", 10, 1, "Vy", "-section", 9)
     with pytest.raises(beamsolid.OpenSeesError, match=r"section Aggregator 11.*all of P, Mz, My and T"):
         ops.section("Aggregator", 11, 1, "P", 1, "Mz")
     with pytest.raises(beamsolid.OpenSeesError, match=r"section WFSection2d 12.*2D model"):
         ops.section("WFSection2d", 12, 1, 10.0, 1.0, 6.0, 2.0, 3, 2)
+
+
+@pytest.mark.parametrize("tf, nfw, nff", [(0.0, 20, 0), (0.05, 20, 0), (0.05, 0, 2), (0.0, 4, 3)])
+def test_wide_flange_without_flanges_or_web(ops, tf, nfw, nff):
+    # tf = 0, Nff = 0 or Nfw = 0 leave the flanges or the web out (OpenSees
+    # accepts them: a public sensitivity example uses tf = 0, Nff = 0). Closed
+    # forms: midpoint strips of a rectangle b x h in n fibers have
+    # sum(A y^2) = b h^3 / 12 (1 - 1/n^2).
+    E, d, tw, bf = 29000.0, 0.5, 0.1, 0.1
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    ops.uniaxialMaterial("Elastic", 1, E)
+    ops.section("WFSection2d", 1, 1, d, tw, bf, tf, nfw, nff)
+    zero_length_section(ops, 1)
+    web = d - 2 * tf
+    ea = E * (tw * web * (nfw > 0) + 2 * bf * tf * (nff > 0))  # tf = 0: no flange area
+    ei = E * (tw * web**3 / 12 * (1 - 1 / nfw**2) if nfw else 0.0)
+    if nff and tf:
+        ei += 2 * E * (bf * tf**3 / 12 * (1 - 1 / nff**2) + bf * tf * ((web + tf) / 2) ** 2)
+    k = ops.eleResponse(1, "section", "stiffness")
+    assert k[0] == pytest.approx(ea, rel=1e-12)
+    assert k[3] == pytest.approx(ei, rel=1e-12)
 
 
 def test_wide_flange_fibers_are_numbered_from_the_top_down(ops):

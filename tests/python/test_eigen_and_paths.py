@@ -145,3 +145,29 @@ def test_a_translational_mass_on_a_rigid_link_gives_the_stiff_arm_frequencies(op
     assert rigid == pytest.approx(stiff_arm, rel=1e-5)
     assert rigid == pytest.approx([79.10425324687188, 101.07699805261056, 1525.536837456452], rel=1e-9)
     ops.wipe()
+
+
+def test_standard_eigenproblem_ignores_the_mass(ops):
+    # eigen('-standard', n): K phi = lambda phi, as OpenSees. A 2D cantilever
+    # column (EI = 100, EA = 100, L = 3) with a tip mass: the standard
+    # eigenvalues are those of the tip's 3 x 3 stiffness (closed form), not
+    # the generalized 3 EI / (L^3 m).
+    np = pytest.importorskip("numpy")
+    E, A, I, L = 100.0, 1.0, 1.0, 3.0
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    ops.node(1, 0.0, 0.0)
+    ops.node(2, 0.0, L)
+    ops.fix(1, 1, 1, 1)
+    ops.mass(2, 7.0, 7.0, 0.0)
+    ops.geomTransf("Linear", 1)
+    ops.element("elasticBeamColumn", 1, 1, 2, A, E, I, 1)
+    K = np.array([[12 * E * I / L**3, 0.0, -6 * E * I / L**2],
+                  [0.0, E * A / L, 0.0],
+                  [-6 * E * I / L**2, 0.0, 4 * E * I / L]])
+    expected = np.linalg.eigvalsh(K)
+    assert ops.eigen("-standard", 3) == pytest.approx(list(expected), rel=1e-10)
+    assert ops.eigen("-standard", "-fullGenLapack", 2) == pytest.approx(list(expected[:2]), rel=1e-10)
+    # Modes of unit length.
+    phi = ops.nodeEigenvector(2, 1)
+    assert sum(p * p for p in phi) == pytest.approx(1.0, rel=1e-10)
+    assert ops.eigen(1) == pytest.approx([3 * E * I / L**3 / 7.0], rel=1e-10)

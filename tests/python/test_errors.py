@@ -115,3 +115,14 @@ def test_numpy_scalars_are_accepted(model):
     base(model)
     model.node(np.int64(3), np.float64(1.5), np.float32(0.5), 0)
     assert model.nodeCoord(3) == [1.5, 0.5, 0.0]
+
+
+def test_numpy_arrays_are_refused_by_name(model):
+    # A one-element array (rayleigh(0, 0, 0, 2 * zeta / omega) with omega from
+    # a NumPy computation) used to fail as "integer out of range".
+    np = pytest.importorskip("numpy")
+    base(model)
+    with pytest.raises(OpenSeesError, match=r"node: argument 2: expected a number or a string, got an array \(1,\)"):
+        model.node(3, np.array([1.5]), 0.0, 0.0)
+    model.node(4, np.array(1.5), 0.0, 0.0)  # a 0-d array is a number
+    assert model.nodeCoord(4, 1) == 1.5

@@ -31,7 +31,8 @@ def base(m):
 # (id, command, args, fragments that must all appear in the message)
 CASES = [
     # elasticBeamColumn
-    ("beam count", "element", ("elasticBeamColumn", 5, 2, 3, 1.0, 100.0), ["element elasticBeamColumn 5", "transfTag"]),
+    ("beam count", "element", ("elasticBeamColumn", 5, 2, 3, 1.0, 100.0, 3.0), ["element elasticBeamColumn 5", "transfTag"]),
+    ("beam section form", "element", ("elasticBeamColumn", 5, 2, 3, 9, 1), ["element elasticBeamColumn 5", "section 9 does not exist"]),
     ("beam type", "element", ("elasticBeamColumn", 5, 2, 3, "A", 100.0, 40.0, 1.0, 1.0, 1.0, 1), ["element elasticBeamColumn 5", "A, E, G, J, Iy, Iz"]),
     ("beam node", "element", ("elasticBeamColumn", 5, 2, 99, 1.0, 100.0, 40.0, 1.0, 1.0, 1.0, 1), ["node 99 does not exist"]),
     ("beam transf", "element", ("elasticBeamColumn", 5, 2, 3, 1.0, 100.0, 40.0, 1.0, 1.0, 1.0, 7), ["geomTransf 7 does not exist"]),

@@ -87,3 +87,37 @@ def test_bad_input_names_the_argument(model, args, words):
     with pytest.raises(beamsolid.OpenSeesError) as info:
         model.integrator("GeneralizedAlpha", *args)
     assert "GeneralizedAlpha" in str(info.value) and words in str(info.value)
+
+
+def test_hht_generalized_is_generalized_alpha_under_another_name(model):
+    # integrator('HHTGeneralized', alphaI, alphaF, <beta, gamma>) is
+    # GeneralizedAlpha with alphaM = alphaI and beta, gamma swapped in order:
+    # both give the same history on an SDOF, defaults and given values.
+    def history(*args):
+        model.wipe()
+        model.model("basic", "-ndm", 1, "-ndf", 1)
+        model.node(1, 0.0)
+        model.node(2, 0.0)
+        model.fix(1, 1)
+        model.mass(2, 2.0)
+        model.uniaxialMaterial("Elastic", 1, 50.0)
+        model.element("zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1)
+        model.timeSeries("Linear", 1)
+        model.pattern("Plain", 1, 1)
+        model.load(2, 10.0)
+        model.constraints("Plain")
+        model.numberer("Plain")
+        model.system("FullGeneral")
+        model.test("NormDispIncr", 1e-12, 20)
+        model.algorithm("Newton")
+        model.integrator(*args)
+        model.analysis("Transient")
+        out = []
+        for _ in range(6):
+            assert model.analyze(1, 0.05) == 0
+            out.append(model.nodeDisp(2, 1))
+        return out
+    assert history("HHTGeneralized", 0.9, 0.8) == pytest.approx(history("GeneralizedAlpha", 0.9, 0.8), rel=1e-14)
+    assert history("HHTGeneralized", 1.0, 0.7, 0.3, 0.65) == pytest.approx(
+        history("GeneralizedAlpha", 1.0, 0.7, 0.65, 0.3), rel=1e-14)
+    assert history("HHTGeneralized", 1.0, 0.8) == pytest.approx(history("HHT", 0.8), rel=1e-14)

@@ -105,3 +105,30 @@ def test_constraint_bookkeeping_after_removal(ops):
     ops.node(4, 4.0, 0.0, 0.0)
     ops.fix(4, 1, 1, 1)
     ops.equalDOF(4, 3, 3)
+
+
+def test_remove_sp_of_one_load_pattern(ops):
+    """remove('sp', node, dof, patternTag) removes that pattern's sp only (OpenSees' optional
+    pattern tag); the same sp of another pattern stays, and a missing one is an error."""
+    ops.model("basic", "-ndm", 1, "-ndf", 1)
+    ops.node(1, 0.0)
+    ops.node(2, 1.0)
+    ops.fix(1, 1)
+    ops.uniaxialMaterial("Elastic", 1, 10.0)
+    ops.element("zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1)
+    ops.timeSeries("Constant", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.sp(2, 1, 0.5)
+    ops.pattern("Plain", 2, 1)
+    ops.load(2, 3.0)
+    with pytest.raises(ops.OpenSeesError, match=r"remove sp: load pattern 2 has no sp on node 2 dof 1"):
+        ops.remove("sp", 2, 1, 2)
+    with pytest.raises(ops.OpenSeesError, match=r"remove sp: load pattern 9 does not exist"):
+        ops.remove("sp", 2, 1, 9)
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    assert ops.analyze(1) == 0
+    assert ops.nodeDisp(2, 1) == pytest.approx(0.5)
+    ops.remove("sp", 2, 1, 1)
+    assert ops.analyze(1) == 0
+    assert ops.nodeDisp(2, 1) == pytest.approx(0.3)  # now the load alone: 3 / 10

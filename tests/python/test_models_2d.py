@@ -48,6 +48,17 @@ def test_default_ndf_is_ndm_times_ndm_plus_one_over_two(model, ndm, ndf):
     assert model.nodeCoord(1, ndm) == 1.5
 
 
+def test_node_coord_takes_the_axis_by_name(model):
+    # OpenSees takes dim as 1..ndm or as X, Y, Z in either case.
+    model.model("basic", "-ndm", 2, "-ndf", 3)
+    model.node(1, 1.5, 2.5)
+    assert [model.nodeCoord(1, d) for d in ("X", "y", 1, 2)] == [1.5, 2.5, 1.5, 2.5]
+    with pytest.raises(beamsolid.OpenSeesError, match=r"nodeCoord 1.*dim 3 is out of range 1..2"):
+        model.nodeCoord(1, "Z")
+    with pytest.raises(beamsolid.OpenSeesError, match=r"nodeCoord 1: argument 2 \(dim\).*X, Y, Z"):
+        model.nodeCoord(1, "W")
+
+
 @pytest.mark.parametrize("ndm, ndf", [(1, 2), (2, 1), (2, 6), (3, 2), (4, 3)])
 def test_ndf_outside_the_space_is_refused(model, ndm, ndf):
     with pytest.raises(beamsolid.OpenSeesError, match="model.*-nd[mf]"):
@@ -559,3 +570,30 @@ def test_quad_needs_a_2d_model_with_ndf_2(model):
     model.pattern("Plain", 1, 1)
     with pytest.raises(beamsolid.OpenSeesError, match=r"eleLoad: .*\(bx, by, <bz>\): expected at least 2"):
         model.eleLoad("-ele", 5, "-type", "-selfWeight", 1.0)
+
+
+def test_parallel_numberer_names_number_as_their_serial_ones(model):
+    # OpenSeesSP/MP's 'ParallelPlain' and 'ParallelRCM' run as Plain and RCM.
+    results = {}
+    for name in ("Plain", "ParallelPlain", "RCM", "ParallelRCM"):
+        model.wipe()
+        model.model("basic", "-ndm", 2, "-ndf", 2)
+        for n in range(1, 5):
+            model.node(n, float(n), 0.0)
+        model.fix(1, 1, 1)
+        model.uniaxialMaterial("Elastic", 1, 100.0)
+        for e in range(1, 4):
+            model.element("truss", e, e, e + 1, 1.0, 1)
+        for n in range(2, 5):
+            model.fix(n, 0, 1)
+        model.timeSeries("Linear", 1)
+        model.pattern("Plain", 1, 1)
+        model.load(4, 1.0, 0.0)
+        model.numberer(name)
+        model.system("FullGeneral")
+        model.integrator("LoadControl", 1.0)
+        model.analysis("Static")
+        assert model.analyze(1) == 0
+        results[name] = model.nodeDisp(4, 1)
+    # Three bars in series, EA/L = 100 each: u = 3 P / 100.
+    assert all(v == pytest.approx(0.03, rel=1e-12) for v in results.values()), results

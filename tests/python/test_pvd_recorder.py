@@ -378,3 +378,97 @@ def test_quads_are_vtk_quads_next_to_lines(ops, tmp_path):
         e = np.array(ops.eleResponse(ele, "strains")).reshape(4, 3).mean(axis=0)
         close(row, [e[0], e[1], 0.0, e[2], 0.0, 0.0], rtol)
     close(data["stress"][2:], np.zeros((2, 6)), rtol)
+
+
+def test_shells_are_vtk_quads_with_their_section_forces(ops, tmp_path):
+    """ShellMITC4 elements are VTK_QUAD cells (elementKind 6) ahead of the
+    beams; 'shellForce' is the mean over the 4 Gauss points of eleResponse
+    'stresses' (p11 p22 p12 m11 m22 m12 q1 q2), 0 on other cells."""
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    for k, (x, z) in enumerate([(0, 0), (2, 0), (4, 0), (0, 3), (2, 3.2), (4, 3)]):
+        ops.node(k + 1, float(x), 0.0, float(z))
+    for n in (1, 2, 3):
+        ops.fix(n, 1, 1, 1, 1, 1, 1)
+    ops.section("ElasticMembranePlateSection", 1, 3.0e4, 0.2, 0.2)
+    ops.element("ShellMITC4", 1, 1, 2, 5, 4, 1)
+    ops.element("ShellMITC4", 2, 2, 3, 6, 5, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.element("elasticBeamColumn", 3, 4, 5, 0.1, 3.0e4, 1.25e4, 1e-3, 2e-3, 3e-3, 1)
+    ops.recorder("PVD", str(tmp_path / "shells"))
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(5, 10.0, 3.0, -4.0, 0.0, 0.0, 1.0)
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    assert ops.analyze(1) == 0
+    listed = read_collection(str(tmp_path / "shells.pvd"))
+    grid = meshio.read(str(tmp_path / listed[-1][1]))
+    assert [(b.type, len(b.data)) for b in grid.cells] == [("quad", 2), ("line", 1)]
+    tags = grid.point_data["nodeTag"].ravel().tolist()
+    for cell, ele in zip(grid.cells[0].data, (1, 2)):
+        assert [tags[i] for i in cell] == ops.eleNodes(ele)
+    data = cell_arrays(grid)
+    assert data["elementKind"].ravel().tolist() == [6, 6, 2]
+    for row, ele in zip(data["shellForce"][:2], (1, 2)):
+        s = np.array(ops.eleResponse(ele, "stresses")).reshape(4, 8).mean(axis=0)
+        assert np.abs(s).max() > 0.1
+        close(row, s, 1e-9)
+    close(data["shellForce"][2], np.zeros(8), 1e-9)
+
+
+def test_triangles_and_tetrahedra_are_vtk_triangles_and_tetras(ops, tmp_path):
+    """tri31 cells are VTK_TRIANGLE (elementKind 5) and FourNodeTetrahedron
+    cells VTK_TETRA (elementKind 1), with their node order and the one
+    point's stress in the xx, yy, (zz,) xy slots."""
+    ops.model("basic", "-ndm", 2, "-ndf", 2)
+    for tag, (x, y) in enumerate([(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)], start=1):
+        ops.node(tag, x, y)
+    ops.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.25)
+    ops.element("tri31", 1, 1, 2, 3, 1.0, "PlaneStress", 1)
+    ops.element("tri31", 2, 1, 3, 4, 1.0, "PlaneStress", 1)
+    ops.fix(1, 1, 1)
+    ops.fix(4, 1, 0)
+    ops.recorder("PVD", str(tmp_path / "tris"))
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(3, 3.0, -2.0)
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    assert ops.analyze(1) == 0
+    listed = read_collection(str(tmp_path / "tris.pvd"))
+    grid = meshio.read(str(tmp_path / listed[-1][1]))
+    assert [(b.type, len(b.data)) for b in grid.cells] == [("triangle", 2)]
+    tags = grid.point_data["nodeTag"].ravel().tolist()
+    for cell, ele in zip(grid.cells[0].data, (1, 2)):
+        assert [tags[i] for i in cell] == ops.eleNodes(ele)
+    data = cell_arrays(grid)
+    assert data["elementKind"].ravel().tolist() == [5, 5]
+    for row, ele in zip(data["stress"], (1, 2)):
+        s = ops.eleResponse(ele, "stresses")
+        assert np.abs(s).max() > 0.1
+        close(row, [s[0], s[1], 0.0, s[2], 0.0, 0.0], 1e-9)
+    ops.wipe()
+
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    for tag, x in enumerate([(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)], start=1):
+        ops.node(tag, *x)
+    ops.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.25)
+    ops.element("FourNodeTetrahedron", 1, 1, 2, 3, 4, 1)
+    ops.fix(1, 1, 1, 1)
+    ops.fix(2, 0, 1, 1)
+    ops.fix(3, 0, 0, 1)
+    ops.recorder("PVD", str(tmp_path / "tet"))
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(4, 1.0, 2.0, 3.0)
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    assert ops.analyze(1) == 0
+    listed = read_collection(str(tmp_path / "tet.pvd"))
+    grid = meshio.read(str(tmp_path / listed[-1][1]))
+    assert [(b.type, len(b.data)) for b in grid.cells] == [("tetra", 1)]
+    tags = grid.point_data["nodeTag"].ravel().tolist()
+    assert [tags[i] for i in grid.cells[0].data[0]] == [1, 2, 3, 4]
+    data = cell_arrays(grid)
+    assert data["elementKind"].ravel().tolist() == [1]
+    close(data["stress"][0], ops.eleResponse(1, "stresses"), 1e-9)

@@ -510,8 +510,10 @@ def test_pvd_recorders_on_one_name_are_refused(model, tmp_path):
 
 def test_an_element_recorder_leaves_out_elements_without_the_response(tmp_path, capfd):
     """As OpenSees: a section response asked of a mix of force-based and elastic members records the
-    force-based ones only (the elastic beam is named in a warning); a name no element has gives an
-    empty file instead of stopping the script."""
+    force-based ones only (the elastic beam is named in a warning); a name no element has gives
+    rows of the time alone with -time (nothing without it, and nothing in an envelope) instead of
+    stopping the script, and each element's XML block stays, empty (OpenSeesPy 3.7.1 does all
+    this: public example 1b records 'deformations' of elastic beams)."""
     m = beamsolid.Model()
     m.model("basic", "-ndm", 2, "-ndf", 3)
     for tag, y in ((1, 0.0), (2, 3.0), (3, 6.0)):
@@ -525,6 +527,11 @@ def test_an_element_recorder_leaves_out_elements_without_the_response(tmp_path, 
     mixed, unknown = tmp_path / "mixed.out", tmp_path / "unknown.out"
     m.recorder("Element", "-file", str(mixed), "-time", "-ele", 1, 2, "section", 1, "force")
     m.recorder("Element", "-file", str(unknown), "-time", "-ele", 1, 2, "noSuchResponse")
+    untimed, envelope = tmp_path / "untimed.out", tmp_path / "envelope.out"
+    xml = tmp_path / "unknown.xml"
+    m.recorder("Element", "-file", str(untimed), "-ele", 1, 2, "noSuchResponse")
+    m.recorder("EnvelopeElement", "-file", str(envelope), "-time", "-ele", 1, 2, "noSuchResponse")
+    m.recorder("Element", "-xml", str(xml), "-time", "-ele", 2, "noSuchResponse")
     assert "element 2 (elasticBeamColumn) has no response 'section 1 force'" in capfd.readouterr().err
     m.timeSeries("Linear", 1)
     m.pattern("Plain", 1, 1)
@@ -538,4 +545,37 @@ def test_an_element_recorder_leaves_out_elements_without_the_response(tmp_path, 
     assert [len(r) for r in rows] == [3, 3]
     assert rows[1][0] == pytest.approx(1.0)
     assert abs(rows[1][2]) == pytest.approx(6.0, rel=1e-10)
-    assert unknown.read_text() == ""
+    assert unknown.read_text().split() == ["0.5", "1"]
+    assert untimed.read_text() == "" and envelope.read_text() == ""
+    text = xml.read_text()
+    assert '<ElementOutput eleType="ElasticBeam2d" eleTag="2" node1="2" node2="3"/>' in text
+    assert text.split("<Data>")[1].split() == ["0.5", "1", "</Data>", "</OpenSees>"]
+
+
+def test_ele_dynamical_force_balances_the_load(model):
+    """eleDynamicalForce(tag): the resisting force with inertia and Rayleigh damping (OpenSees'
+    getResistingForceIncInertia). A cantilever of one element with consistent mass: at the free
+    node it equals the applied load after each converged step (the equation of motion); it is the
+    static eleForce plus M a + C v, with M a from the element's own mass matrix in closed form."""
+    L, m = 3.0, 2.0
+    model.model("basic", "-ndm", 2, "-ndf", 3)
+    model.node(1, 0.0, 0.0)
+    model.node(2, L, 0.0)
+    model.fix(1, 1, 1, 1)
+    model.geomTransf("Linear", 1)
+    model.element("elasticBeamColumn", 1, 1, 2, 1.0, 100.0, 1.0, 1, "-mass", m, "-cMass")
+    model.timeSeries("Linear", 1)
+    model.pattern("Plain", 1, 1)
+    model.load(2, 0.0, 1.0, 0.0)
+    model.integrator("Newmark", 0.5, 0.25)
+    model.analysis("Transient")
+    for step in range(1, 4):
+        assert model.analyze(1, 0.1) == 0
+        f = model.eleDynamicalForce(1)
+        assert f[3:] == pytest.approx([0.0, 0.1 * step, 0.0], abs=1e-12)
+        # Transverse: the consistent mass of an Euler-Bernoulli beam at the free end
+        # (156, 22 L; 22 L, 4 L^2) m L / 420 times (a_y, a_rz), added to eleForce.
+        ay, arz = model.nodeAccel(2, 2), model.nodeAccel(2, 3)
+        inertia_y = m * L / 420 * (156 * ay - 22 * L * arz)
+        assert f[4] == pytest.approx(model.eleForce(1, 5) + inertia_y, rel=1e-10)
+    assert model.eleDynamicalForce(1, 5) == [pytest.approx(f[4])]

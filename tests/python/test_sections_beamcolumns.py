@@ -402,3 +402,60 @@ def test_force_beam_column_3d_plastic_deformation_of_an_elastic_member_under_ele
     assert max(abs(x) for x in v) > 1e-4
     assert max(abs(x) for x in m.eleResponse(1, "plasticDeformation")) < 1e-12 * max(abs(x) for x in v) + 1e-18
     m.wipe()
+
+
+def test_elastic_beam_column_3d_takes_an_elastic_section(ops):
+    # elasticBeamColumn(tag, i, j, secTag, transfTag) in 3D reads E, A, Iz, Iy,
+    # G, J from an Elastic section: a cantilever under tip forces and torque
+    # gives the closed forms in both planes, axially and in torsion (1e-12).
+    E_, A_, Iz, Iy, G_, J_ = 2.0e5, 0.05, 5.0e-4, 2.0e-4, 8.0e4, 3.0e-4
+    Lc, N, Py, Pz, T = 3.0, 7.0, -20.0, 11.0, 4.0
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, Lc, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.section("Elastic", 1, E_, A_, Iz, Iy, G_, J_)
+    ops.element("elasticBeamColumn", 1, 1, 2, 1, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, N, Py, Pz, T, 0.0, 0.0)
+    static_setup(ops, ("LoadControl", 1.0), tol=1e-12)
+    assert ops.analyze(1) == 0
+    assert ops.nodeDisp(2, 1) == pytest.approx(N * Lc / (E_ * A_), rel=1e-12)
+    assert ops.nodeDisp(2, 2) == pytest.approx(Py * Lc**3 / (3 * E_ * Iz), rel=1e-12)
+    assert ops.nodeDisp(2, 3) == pytest.approx(Pz * Lc**3 / (3 * E_ * Iy), rel=1e-12)
+    assert ops.nodeDisp(2, 4) == pytest.approx(T * Lc / (G_ * J_), rel=1e-12)
+    ops.section("Fiber", 2, "-GJ", G_ * J_)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"elasticBeamColumn 2: section 2 is a Fiber section.*Elastic"):
+        ops.element("elasticBeamColumn", 2, 1, 2, 2, 1)
+
+
+def test_elastic_beam_column_3d_releases_carry_point_loads_over(ops):
+    # A fixed-fixed member, P at a = 0.3 L: '-releasez 1' makes it a propped
+    # cantilever pinned at I in x-y (R_I = P b^2 (a + 2L) / (2 L^3), M_J = P a b
+    # (a + L) / (2 L^2)), '-releasey 2' one pinned at J in x-z (R_J = P a^2
+    # (b + 2L) / (2 L^3), M_I = P a b (b + L) / (2 L^2)). (OpenSeesPy 3.7.1
+    # keeps the fixed-end moments of a -beamPoint load at a released 3D end.)
+    L, Py, Pz, xL = 4.0, 1.0, -2.0, 0.3
+    a, b = xL * L, (1 - xL) * L
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.node(1, 0.0, 0.0, 0.0)
+    ops.node(2, L, 0.0, 0.0)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.fix(2, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.element("elasticBeamColumn", 1, 1, 2, 0.01, 2e8, 8e7, 2e-5, 1.2e-5, 3e-5, 1, "-releasez", 1, "-releasey", 2)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.eleLoad("-ele", 1, "-type", "-beamPoint", Py, Pz, xL)
+    static_setup(ops, ("LoadControl", 1.0), tol=1e-12)
+    assert ops.analyze(1) == 0
+    N1, Vy1, Vz1, T1, My1, Mz1, N2, Vy2, Vz2, T2, My2, Mz2 = ops.eleResponse(1, "localForce")
+    assert -Vy1 == pytest.approx(Py * b**2 * (a + 2 * L) / (2 * L**3), rel=1e-12)
+    assert Mz2 == pytest.approx(Py * a * b * (a + L) / (2 * L**2), rel=1e-12)
+    assert abs(Vz2) == pytest.approx(abs(Pz) * a**2 * (b + 2 * L) / (2 * L**3), rel=1e-12)
+    assert abs(My1) == pytest.approx(abs(Pz) * a * b * (b + L) / (2 * L**2), rel=1e-12)
+    assert Mz1 == pytest.approx(0.0, abs=1e-12) and My2 == pytest.approx(0.0, abs=1e-12)
+    with pytest.raises(beamsolid.OpenSeesError, match=r"elasticBeamColumn 2: argument \d+ \(releaseCode\).*0, 1 \(I\)"):
+        ops.element("elasticBeamColumn", 2, 1, 2, 0.01, 2e8, 8e7, 2e-5, 1.2e-5, 3e-5, 1, "-releasey", 4)

@@ -291,3 +291,45 @@ def test_wrapped_for_the_gravity_stage_keeps_its_stress_and_stage(model):
     qf = (c * 5.0 + 3 * 0.398 * 10.0) / (c - 0.398)
     s = model.eleResponse(1, "material", "1", "stress")
     assert s[2] == pytest.approx(-10.0 - qf, rel=1e-9)
+
+
+def _quad_under_load(m, mat_cmds, quad_type, mat_tag):
+    m.wipe()
+    m.model("basic", "-ndm", 2, "-ndf", 2)
+    for i, c in enumerate([(0.0, 0.0), (1.0, 0.0), (1.1, 0.9), (0.0, 1.0)]):
+        m.node(i + 1, *c)
+    m.fix(1, 1, 1)
+    m.fix(4, 1, 0)
+    for cmd in mat_cmds:
+        m.nDMaterial(*cmd)
+    m.element("quad", 1, 1, 2, 3, 4, 1.0, quad_type, mat_tag)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(2, 0.9, 0.2)
+    m.load(3, 0.7, -0.1)
+    m.integrator("LoadControl", 0.25)
+    m.test("NormDispIncr", 1e-12, 30)
+    m.algorithm("Newton")
+    m.analysis("Static")
+    assert m.analyze(4) == 0
+    return m.nodeDisp(2) + m.nodeDisp(3) + m.eleResponse(1, "stresses")
+
+
+@pytest.mark.parametrize("plane", ["PlaneStress", "PlaneStrain"])
+def test_plane_material_wrappers_force_their_plane(model, plane):
+    """nDMaterial('PlaneStress' | 'PlaneStrain', tag, mat3DTag) uses the 3D material in that plane
+    whatever the quad declares (as OpenSees' wrappers do): the same answers as the 3D material
+    under a quad of that type, for an elastic and a yielding (J2) material, to round-off."""
+    other = "PlaneStrain" if plane == "PlaneStress" else "PlaneStress"
+    for base in (("ElasticIsotropic", 1, 100.0, 0.3), ("J2Plasticity", 1, 100.0, 50.0, 1.0, 1.0, 0.0, 5.0)):
+        direct = _quad_under_load(model, [base], plane, 1)
+        for declared in (plane, other):
+            wrapped = _quad_under_load(model, [base, (plane, 2, 1)], declared, 2)
+            assert wrapped == pytest.approx(direct, rel=1e-12, abs=1e-14)
+    model.wipe()
+    model.model("basic", "-ndm", 2, "-ndf", 2)
+    with pytest.raises(beamsolid.OpenSeesError, match=rf"nDMaterial {plane} 2: .*nDMaterial 9 does not exist"):
+        model.nDMaterial(plane, 2, 9)
+    model.nDMaterial("ContactMaterial3D", 3, 0.3, 1.0, 0.0, 0.0)
+    with pytest.raises(beamsolid.OpenSeesError, match=rf"nDMaterial {plane} 4: nDMaterial 3 .*"):
+        model.nDMaterial(plane, 4, 3)

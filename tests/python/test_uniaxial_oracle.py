@@ -245,6 +245,14 @@ def _cases():
                                                  0.9, 1.0, 1.0, *bl_geo, 0.7, 0.9), pk_elastic_first),
         "Pinching4-start-negative": (("Pinching4", 1, *p4_stiff, *p4_ratios, *p4_all, 10.0, "energy"),
                                      [-e for e in p4_path]),
+        # Bouc-Wen (alpha, ko, n, gamma, beta, Ao, deltaA, deltaNu, deltaEta): softening, a sharp
+        # transition, hardening (gamma + beta < 0), and every degradation at once.
+        # z saturates at (Ao / (gamma + beta))^(1/n) = 1: strains of order 1.
+        "BoucWen": (("BoucWen", 1, 0.1, E0, 1.0, 0.5, 0.5, 1.0, 0.0, 0.0, 0.0), [e / ey * 0.3 for e in steel]),
+        "BoucWen-sharp": (("BoucWen", 1, 0.05, E0, 4.0, 0.3, 0.7, 1.0, 0.0, 0.0, 0.0), [e / ey * 0.3 for e in steel]),
+        "BoucWen-hardening": (("BoucWen", 1, 0.0, 50.0, 1.0, -0.8, 0.3, 1.0, 0.0, 0.0, 0.0), [e / ey * 0.1 for e in steel]),
+        "BoucWen-degrading": (("BoucWen", 1, 0.1, 100.0, 1.5, -0.2, 0.7, 1.2, 0.5, 0.3, 0.2),
+                              [e / ey * 0.3 for e in steel]),
     }
     # Round-off: from a yielded (cracked, hysteretic) state, steps below machine epsilon both
     # ways, then a step just above it. OpenSees keeps the committed state and tangent for a

@@ -8,6 +8,10 @@ script its own).
 """
 
 SCRIPTS = (
+    "orthotropic",
+    "beam_releases_3d",
+    "shells",
+    "shear_sections_3d",
     "timoshenko_beam",
     "py_pile_springs_public",
     "cantilever3d",
@@ -61,5 +65,8 @@ SCRIPTS = (
     "bilin_frame_2d",
     "min_unbal_disp_norm",
     "hinge_integrations",
+    "tri31_mesh",
+    "tet_mesh",
+    "two_node_link",
     "imk_peak_frame_2d",
 )

@@ -1,6 +1,6 @@
 """beamIntegration rules with given or equally spaced points: UserDefined,
-FixedLocation, MidDistance, Trapezoidal, CompositeSimpson (both argument
-forms). For each, a forceBeamColumn and a dispBeamColumn cantilever of a
+FixedLocation, MidDistance, LowOrder (no, some and all weights given, locations
+out of order), Trapezoidal, CompositeSimpson (both argument forms). For each, a forceBeamColumn and a dispBeamColumn cantilever of a
 Steel01 fiber section (a second elastic section at some points) pushed past
 yield: sectionLocation, sectionWeight, every step's code, iteration count and
 tip displacement, and the end section's forces.
@@ -12,6 +12,10 @@ RULES = (
     ("FixedLocation", (4, 1, 1, 2, 2, 0.05, 0.3, 0.65, 0.9)),
     ("MidDistance", (5, 1, 2, 2, 2, 1, 0.0, 0.2, 0.5, 0.8, 1.0)),
     ("MidDistance", (3, 1, 1, 1, 0.1, 0.4, 0.85)),
+    ("LowOrder", (5, 1, 2, 2, 2, 1, 0.0, 0.2, 0.5, 0.8, 1.0, 0.2, 0.2)),
+    ("LowOrder", (4, 1, 1, 2, 2, 0.05, 0.3, 0.65, 0.9)),
+    ("LowOrder", (3, 1, 2, 1, 0.0, 0.5, 1.0, 0.1, 0.8, 0.1)),
+    ("LowOrder", (3, 1, 2, 1, 0.9, 0.5, 0.1, 0.3)),
     ("Trapezoidal", (1, 5)),
     ("Trapezoidal", (4, 1, 2, 2, 1)),
     ("CompositeSimpson", (1, 5)),

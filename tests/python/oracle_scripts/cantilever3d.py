@@ -3,7 +3,8 @@ transforms, joint offsets, -beamUniform and -beamPoint element loads and
 reactions.
 
 Two inclined members (not along a global axis, vecxz not orthogonal to the
-axis) so that every local/global rotation is exercised.
+axis) so that every local/global rotation is exercised; the second takes its
+properties from an Elastic section (the section form).
 """
 
 E, G = 200e6, 80e6
@@ -26,7 +27,8 @@ def _build(ops, transf, offsets, point_loads=False):
         ops.geomTransf(transf, 1, *vecxz)
     ops.geomTransf(transf, 2, 0.0, 1.0, 0.3)
     ops.element("elasticBeamColumn", 1, 1, 2, A, E, G, J, IY, IZ, 1)
-    ops.element("elasticBeamColumn", 2, 2, 3, A, E, G, J, IY, IZ, 2)
+    ops.section("Elastic", 7, E, A, IZ, IY, G, J)
+    ops.element("elasticBeamColumn", 2, 2, 3, 7, 2)
     ops.timeSeries("Linear", 1)
     ops.pattern("Plain", 1, 1)
     ops.load(3, 3.0, -2.0, -40.0, 0.5, -0.3, 0.7)
