@@ -8,6 +8,7 @@ script its own).
 """
 
 SCRIPTS = (
+    "layered_shells",
     "orthotropic",
     "beam_releases_3d",
     "shells",
