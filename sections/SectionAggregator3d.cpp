@@ -9,15 +9,7 @@
 
 namespace beamsolid {
 
-int SectionAggregator3d::componentOf(SectionCode code) {
-  switch (code) {
-    case SectionCode::P: return 0;
-    case SectionCode::Mz: return 1;
-    case SectionCode::My: return 2;
-    case SectionCode::T: return 3;
-    default: return -1;
-  }
-}
+int SectionAggregator3d::componentOf(SectionCode code) { return index3d(code); }
 
 SectionAggregator3d::SectionAggregator3d(int tag, std::unique_ptr<SectionForceDeformation> section,
                                          std::array<std::unique_ptr<UniaxialMaterial>, 4> materials)

@@ -34,6 +34,17 @@ inline const char* sectionDeformationName(SectionCode code) {
   return "?";
 }
 
+// Position of a code in the 3D section order [P, Mz, My, T]; -1 for shear.
+inline int index3d(SectionCode code) {
+  switch (code) {
+    case SectionCode::P: return 0;
+    case SectionCode::Mz: return 1;
+    case SectionCode::My: return 2;
+    case SectionCode::T: return 3;
+    default: return -1;
+  }
+}
+
 // 'P', 'Mz', 'My', 'Vy', 'Vz', 'T' as the Aggregator command spells them.
 inline std::optional<SectionCode> parseSectionCode(const std::string& text) {
   if (text == "P") return SectionCode::P;

@@ -31,26 +31,11 @@ std::vector<SectionCode> SectionForceDeformation::responseCodes() const {
   return codes;
 }
 
-namespace {
-
-// Position in [P, Mz, My, T] of a code, or -1 for shear.
-int bendingIndex(SectionCode code) {
-  switch (code) {
-    case SectionCode::P: return 0;
-    case SectionCode::Mz: return 1;
-    case SectionCode::My: return 2;
-    case SectionCode::T: return 3;
-    default: return -1;
-  }
-}
-
-}  // namespace
-
 std::vector<int> SectionForceDeformation::responsePositions() const {
   const std::vector<SectionCode> codes = responseCodes();
   std::vector<int> at(codes.size());
   for (std::size_t r = 0; r < codes.size(); ++r) {
-    at[r] = bendingIndex(codes[r]);
+    at[r] = index3d(codes[r]);
     for (int k = 0; at[r] < 0 && k < numShear(); ++k)
       if (shearCode(k) == codes[r]) at[r] = 4 + k;
   }
