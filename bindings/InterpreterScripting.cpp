@@ -30,6 +30,8 @@ int elementClassTag(const std::string& openSeesName) {
       {"ForceBeamColumn3d", 74}, {"BeamContact3D", 115},     {"BeamEndContact3D", 118},
       {"BeamContact3Dp", 124},   {"BeamEndContact3Dp", 125}, {"ElasticTimoshenkoBeam2d", 145},
       {"Tri31", 33},             {"TwoNodeLink", 86},        {"FourNodeTetrahedron", 179},
+      {"ShellMITC4", 53},        {"ElasticTimoshenkoBeam3d", 146}, {"SSPquad", 119},
+      {"ConstantPressureVolumeQuad", 60}, {"SSPbrick", 121},
   };
   const auto it = tags.find(openSeesName);
   return it == tags.end() ? -1 : it->second;

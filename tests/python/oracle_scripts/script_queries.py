@@ -216,8 +216,37 @@ def _support_motion(ops, out):
     out["imposedSupportMotion"] = [ops.nodeDisp(2, 1), ops.nodeDisp(3, 1)]
 
 
+def _class_tags_more(ops, out):
+    # Class tags of the shell, 3D Timoshenko beam and the stabilized solids.
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    for i, c in enumerate([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]):
+        ops.node(i + 1, *map(float, c))
+    ops.section("ElasticMembranePlateSection", 1, 1000.0, 0.25, 0.1)
+    ops.element("ShellMITC4", 1, 1, 2, 3, 4, 1)
+    ops.geomTransf("Linear", 1, 0.0, 0.0, 1.0)
+    ops.element("ElasticTimoshenkoBeam", 2, 1, 2, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1)
+    out["3d shell and Timoshenko class tags"] = ops.getEleClassTags()
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 2)
+    for i, c in enumerate([(0, 0), (1, 0), (1, 1), (0, 1)]):
+        ops.node(i + 1, *map(float, c))
+    ops.nDMaterial("ElasticIsotropic", 1, 100.0, 0.2)
+    ops.element("SSPquad", 1, 1, 2, 3, 4, 1, "PlaneStrain", 1.0)
+    ops.element("bbarQuad", 2, 1, 2, 3, 4, 1.0, 1)
+    out["2d SSPquad bbarQuad class tags"] = ops.getEleClassTags()
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    for i, c in enumerate([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]):
+        ops.node(i + 1, *map(float, c))
+    ops.nDMaterial("ElasticIsotropic", 1, 100.0, 0.2)
+    ops.element("SSPbrick", 1, *range(1, 9), 1)
+    out["SSPbrick class tag"] = ops.getEleClassTags()
+
+
 def run(ops):
     out = {}
+    _class_tags_more(ops, out)
     _frame_2d(ops, out)
     _loads_3d(ops, out)
     _spectrum_by_parameter(ops, out)
