@@ -171,3 +171,22 @@ def test_standard_eigenproblem_ignores_the_mass(ops):
     phi = ops.nodeEigenvector(2, 1)
     assert sum(p * p for p in phi) == pytest.approx(1.0, rel=1e-10)
     assert ops.eigen(1) == pytest.approx([3 * E * I / L**3 / 7.0], rel=1e-10)
+
+
+def test_mode_components_without_motion_are_exactly_zero(ops):
+    # A cantilever stiffer about one axis: its first mode bends about the other only, so the
+    # components along the stiff direction are round-off; they come out as exact zeros (as in
+    # OpenSees' modes), which keeps modal participations of 0 from printing as 1e-28.
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    for k in range(5):
+        ops.node(k + 1, 0.0, 0.0, 0.5 * k)
+    ops.fix(1, 1, 1, 1, 1, 1, 1)
+    ops.geomTransf("Linear", 1, 1.0, 0.0, 0.0)
+    for k in range(4):
+        ops.element("elasticBeamColumn", k + 1, k + 1, k + 2, 0.01, 2e8, 8e7, 2e-5, 1e-5, 4e-5, 1, "-mass", 10.0)
+    ops.eigen(2)
+    for mode in (1, 2):
+        phi = ops.nodeEigenvector(5, mode)
+        moving = 0 if abs(phi[0]) > abs(phi[1]) else 1
+        assert abs(phi[moving]) > 0.0
+        assert phi[1 - moving] == 0.0 and phi[2] == 0.0
