@@ -8,7 +8,9 @@ amplitude that deteriorates the springs.
 """
 
 
-def _frame(ops, lam):
+def frame(ops, spring_material):
+    """The frame, its springs made by spring_material(tag, K, b, My, theta_p) with b from
+    Mc/My = 1.05 and the n modification; also used by imk_peak_frame_2d."""
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 3)
     H, L, E, Ic, Ib, A, n = 144.0, 288.0, 29000.0, 2000.0, 1500.0, 50.0, 10.0
@@ -18,17 +20,10 @@ def _frame(ops, lam):
     ops.fix(1, 1, 1, 1)
     ops.fix(2, 1, 1, 1)
     ops.geomTransf("Linear", 1)
-    mc_my = 1.05
-
-    def spring_material(tag, K, My):
-        th_p = 0.025
+    mc_my, th_p = 1.05, 0.025
+    for tag, K, My in ((1, (n + 1) * 6 * E * Ic / H, 20000.0), (2, (n + 1) * 6 * E * Ib / L, 10000.0)):
         a = (n + 1.0) * (My * (mc_my - 1.0)) / (K * th_p)
-        b = a / (1.0 + n * (1.0 - a))
-        ops.uniaxialMaterial("Bilin", tag, K, b, b, My, -My, lam, lam, lam, lam, 1.0, 1.0, 1.0, 1.0, th_p, th_p,
-                             0.3, 0.3, 0.4, 0.4, 0.4, 0.4, 1.0, 1.0)
-
-    spring_material(1, (n + 1) * 6 * E * Ic / H, 20000.0)
-    spring_material(2, (n + 1) * 6 * E * Ib / L, 10000.0)
+        spring_material(tag, K, a / (1.0 + n * (1.0 - a)), My, th_p)
     Icm, Ibm = Ic * (n + 1) / n, Ib * (n + 1) / n
     for tag, i, j, I in ((1, 101, 11, Icm), (2, 102, 12, Icm), (3, 11, 21, Icm), (4, 12, 22, Icm),
                          (5, 111, 112, Ibm), (6, 121, 122, Ibm)):
@@ -46,6 +41,14 @@ def _frame(ops, lam):
     ops.system("BandGeneral")
     ops.test("NormDispIncr", 1e-12, 50)
     ops.algorithm("Newton")
+
+
+def _frame(ops, lam):
+    def bilin(tag, K, b, My, th_p):
+        ops.uniaxialMaterial("Bilin", tag, K, b, b, My, -My, lam, lam, lam, lam, 1.0, 1.0, 1.0, 1.0, th_p, th_p,
+                             0.3, 0.3, 0.4, 0.4, 0.4, 0.4, 1.0, 1.0)
+
+    frame(ops, bilin)
 
 
 def _record(ops, out, key):

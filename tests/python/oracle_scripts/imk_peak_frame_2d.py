@@ -11,47 +11,16 @@ Lamda_C is 1000 in the pushover rather than 0: OpenSeesPy 3.7.1 drops a ModIMKPe
 spring's strength to ~1e-10 of its value at the first zero crossing when Lamda_C = 0
 (docs/commands.md); Lamda_A is 0 (docs/commands.md lists its small differences).
 """
+import bilin_frame_2d
 
 
 def _frame(ops, lam_s, lam_c, lam_k, pinching=None):
-    ops.wipe()
-    ops.model("basic", "-ndm", 2, "-ndf", 3)
-    H, L, E, Ic, Ib, A, n = 144.0, 288.0, 29000.0, 2000.0, 1500.0, 50.0, 10.0
-    for tag, x, y in ((1, 0, 0), (2, L, 0), (11, 0, H), (12, L, H), (21, 0, 2 * H), (22, L, 2 * H),
-                      (101, 0, 0), (102, L, 0), (111, 0, H), (112, L, H), (121, 0, 2 * H), (122, L, 2 * H)):
-        ops.node(tag, float(x), float(y))
-    ops.fix(1, 1, 1, 1)
-    ops.fix(2, 1, 1, 1)
-    ops.geomTransf("Linear", 1)
-    mc_my = 1.05
-
-    def spring_material(tag, K, My):
-        th_p = 0.025
-        a = (n + 1.0) * (My * (mc_my - 1.0)) / (K * th_p)
-        b = a / (1.0 + n * (1.0 - a))
+    def imk(tag, K, b, My, th_p):
         name, extra = ("ModIMKPeakOriented", ()) if pinching is None else ("ModIMKPinching", pinching)
         ops.uniaxialMaterial(name, tag, K, b, b, My, -My, *extra, lam_s, lam_c, 0.0, lam_k, 1.0, 1.0, 1.0, 1.0, th_p,
                              th_p, 0.3, 0.3, 0.4, 0.4, 0.4, 0.4, 1.0, 1.0)
 
-    spring_material(1, (n + 1) * 6 * E * Ic / H, 20000.0)
-    spring_material(2, (n + 1) * 6 * E * Ib / L, 10000.0)
-    Icm, Ibm = Ic * (n + 1) / n, Ib * (n + 1) / n
-    for tag, i, j, I in ((1, 101, 11, Icm), (2, 102, 12, Icm), (3, 11, 21, Icm), (4, 12, 22, Icm),
-                         (5, 111, 112, Ibm), (6, 121, 122, Ibm)):
-        ops.element("elasticBeamColumn", tag, i, j, A, E, I, 1)
-    for tag, i, j, m in ((201, 1, 101, 1), (202, 2, 102, 1), (211, 11, 111, 2), (212, 12, 112, 2),
-                         (221, 21, 121, 2), (222, 22, 122, 2)):
-        ops.element("zeroLength", tag, i, j, "-mat", m, "-dir", 6)
-        ops.equalDOF(i, j, 1, 2)
-    ops.timeSeries("Linear", 1)
-    ops.pattern("Plain", 1, 1)
-    ops.load(11, 1.0, 0.0, 0.0)
-    ops.load(21, 2.0, 0.0, 0.0)
-    ops.constraints("Transformation")
-    ops.numberer("RCM")
-    ops.system("BandGeneral")
-    ops.test("NormDispIncr", 1e-12, 50)
-    ops.algorithm("Newton")
+    bilin_frame_2d.frame(ops, imk)
 
 
 def _record(ops, out, key):
