@@ -8,6 +8,8 @@ test (a linear field imposed on the boundary reproduced inside).
 """
 import itertools
 
+import solid_elements  # the static analysis set-up, shared
+
 NX, NY, NZ = 3, 2, 2
 LX, LY, LZ = 3.0, 2.0, 1.6
 E, NU, RHO = 2.0e4, 0.3, 1.8
@@ -65,18 +67,6 @@ def _mesh(ops, body):
     return len(tets)
 
 
-def _analyse(ops, steps=1, dlambda=1.0, handler="Plain"):
-    ops.wipeAnalysis()
-    ops.system("UmfPack")
-    ops.constraints(handler)
-    ops.numberer("Plain")
-    ops.test("NormDispIncr", 1e-12, 10)
-    ops.algorithm("Newton")
-    ops.integrator("LoadControl", dlambda)
-    ops.analysis("Static")
-    return [ops.analyze(1) for _ in range(steps)]
-
-
 def run(ops):
     out = {}
     nodes = [_tag(i, j, k) for k in range(NZ + 1) for j in range(NY + 1) for i in range(NX + 1)]
@@ -87,7 +77,7 @@ def run(ops):
     ops.timeSeries("Linear", 1)
     ops.pattern("Plain", 1, 1)
     ops.load(_tag(NX, NY, NZ), 30.0, -12.0, 8.0)
-    out["codes"] = _analyse(ops)
+    out["codes"] = solid_elements._analyse(ops)
     out["disp"] = [ops.nodeDisp(n) for n in nodes]
     ops.reactions()
     out["reactions"] = [ops.nodeReaction(n) for n in base]
@@ -105,7 +95,7 @@ def run(ops):
     ops.timeSeries("Linear", 2)
     ops.pattern("Plain", 2, 2)
     ops.eleLoad("-ele", *range(1, count + 1), "-type", "-selfWeight", 0.5, 2.0, 1.5)
-    out["sw.codes"] = _analyse(ops, 2, 0.5)
+    out["sw.codes"] = solid_elements._analyse(ops, 2, 0.5)
     out["sw.disp"] = [ops.nodeDisp(n) for n in nodes]
     # Free vibration from a corner push (Newmark, average acceleration).
     _mesh(ops, ())
@@ -140,7 +130,7 @@ def run(ops):
             x = ops.nodeCoord(n)
             for d in range(3):
                 ops.sp(n, d + 1, sum(PATCH[d][c] * x[c] for c in range(3)))
-    out["patch.codes"] = _analyse(ops, handler="Transformation")
+    out["patch.codes"] = solid_elements._analyse(ops, handler="Transformation")
     out["patch.disp"] = [ops.nodeDisp(n) for n in sorted(interior)]
     out["patch.stresses"] = [ops.eleResponse(e, "stresses") for e in (1, 30, count)]
     return out

@@ -7,6 +7,8 @@ pattern; the lowest eigenvalues (element rho, and the material's rho when
 the element's is 0); a few Newmark steps of free vibration; and a patch test
 (a linear field imposed on the boundary reproduced inside).
 """
+import solid_elements  # the shared static analysis set-up
+
 
 NX, NY = 4, 2
 LX, LY = 4.0, 1.0
@@ -40,18 +42,6 @@ def _mesh(ops, kind, pressure, rho, body):
     return tag
 
 
-def _analyse(ops, steps=1, dlambda=1.0, handler="Plain"):
-    ops.wipeAnalysis()
-    ops.system("UmfPack")
-    ops.constraints(handler)
-    ops.numberer("Plain")
-    ops.test("NormDispIncr", 1e-12, 10)
-    ops.algorithm("Newton")
-    ops.integrator("LoadControl", dlambda)
-    ops.analysis("Static")
-    return [ops.analyze(1) for _ in range(steps)]
-
-
 def run(ops):
     out = {}
     nodes = [_tag(i, j) for j in range(NY + 1) for i in range(NX + 1)]
@@ -64,7 +54,7 @@ def run(ops):
         ops.timeSeries("Linear", 1)
         ops.pattern("Plain", 1, 1)
         ops.load(_tag(NX, NY), 5.0, -40.0)
-        out[p + "codes"] = _analyse(ops)
+        out[p + "codes"] = solid_elements._analyse(ops)
         out[p + "disp"] = [ops.nodeDisp(n) for n in nodes]
         ops.reactions()
         out[p + "reactions"] = [ops.nodeReaction(n) for n in base]
@@ -81,7 +71,7 @@ def run(ops):
         ops.timeSeries("Linear", 2)
         ops.pattern("Plain", 2, 2)
         ops.eleLoad("-ele", *range(1, count + 1), "-type", "-selfWeight", 0.5, 2.0)
-        out[p + "sw.codes"] = _analyse(ops, 2, 0.5)
+        out[p + "sw.codes"] = solid_elements._analyse(ops, 2, 0.5)
         out[p + "sw.disp"] = [ops.nodeDisp(n) for n in nodes]
         # Modes: lumped mass with the element's rho, then the material's.
         for rho in (1.7, 0.0):
@@ -119,7 +109,7 @@ def run(ops):
             x = ops.nodeCoord(n)
             for d in range(2):
                 ops.sp(n, d + 1, PATCH[d][0] * x[0] + PATCH[d][1] * x[1])
-        out[p + "patch.codes"] = _analyse(ops, handler="Transformation")
+        out[p + "patch.codes"] = solid_elements._analyse(ops, handler="Transformation")
         out[p + "patch.disp"] = [ops.nodeDisp(_tag(i, 1)) for i in range(1, NX)]
         out[p + "patch.stresses"] = [ops.eleResponse(e, "stresses") for e in (1, 5)]
     return out
