@@ -51,8 +51,10 @@ void LayeredPlateSection::integrate(bool initial) {
   for (Layer& l : layers_) {
     const Matrix58 B = strainMap(l.z);
     if (!initial) l.material->setTrialStrain(B * deformation_);
-    const Eigen::MatrixXd C = initial ? Eigen::MatrixXd(l.material->initialTangent()) : Eigen::MatrixXd(l.material->tangent());
-    tangent_ += l.weight * B.transpose() * C * B;
+    // The fiber's 5 x 5 tangent seen as fixed-size: no heap copy per fiber and iteration.
+    const MatrixView view = initial ? l.material->initialTangent() : l.material->tangent();
+    const Eigen::Map<const Eigen::Matrix<double, 5, 5>> C(view.data());
+    tangent_.noalias() += l.weight * B.transpose() * (C * B);
     if (!initial) force_ += l.weight * B.transpose() * l.material->stress();
   }
 }
