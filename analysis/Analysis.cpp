@@ -63,6 +63,9 @@ int Analysis::oneStep() {
                "dof without mass in a transient analysis?): " + reason;
     return fail(-3, reason);
   }
+  // Sensitivities need the converged trial state and the last committed
+  // history: before the commit. Their failure fails the step (guarded()).
+  if (c.sensitivity) c.sensitivity->compute(model_, *c.integrator);
   c.integrator->commit(model_, c.test->numIterations());
   domain_.commit();
   ++stepsSinceSetup_;

@@ -9,6 +9,7 @@
 #include "analysis/Integrator.h"
 #include "analysis/LinearSolver.h"
 #include "analysis/Numberer.h"
+#include "analysis/SensitivityAlgorithm.h"
 
 namespace beamsolid {
 
@@ -23,6 +24,7 @@ struct AnalysisComponents {
   std::unique_ptr<ConvergenceTest> test;
   std::unique_ptr<Algorithm> algorithm;
   std::unique_ptr<Integrator> integrator;
+  std::unique_ptr<SensitivityAlgorithm> sensitivity;  // sensitivityAlgorithm, if any
 };
 
 // What Static and Transient analyses share: one step is set-up (renumber

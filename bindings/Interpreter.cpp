@@ -156,6 +156,10 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"updateParameter", &Interpreter::updateParameter},
       {"getParamTags", &Interpreter::getParamTags},
       {"getParamValue", &Interpreter::getParamValue},
+      {"sensitivityAlgorithm", &Interpreter::sensitivityAlgorithm},
+      {"computeGradients", &Interpreter::computeGradients},
+      {"sensNodeDisp", &Interpreter::sensNodeDisp},
+      {"sensLambda", &Interpreter::sensLambda},
       {"setElementRayleighDampingFactors", &Interpreter::setElementRayleighDampingFactors},
       {"imposedSupportMotion", &Interpreter::imposedMotion},
   };

@@ -209,6 +209,10 @@ class Interpreter {
   Result updateParameter(CommandArgs&);
   Result getParamTags(CommandArgs&);
   Result getParamValue(CommandArgs&);
+  Result sensitivityAlgorithm(CommandArgs&);
+  Result computeGradients(CommandArgs&);
+  Result sensNodeDisp(CommandArgs&);
+  Result sensLambda(CommandArgs&);
   Result setElementRayleighDampingFactors(CommandArgs&);
   std::vector<const LoadPattern*> loadPatterns(CommandArgs&, const char* command);
   Result mpDofs(CommandArgs&, const char* command, bool constrained);
@@ -245,16 +249,9 @@ class Interpreter {
   // setNumThreads; 0 until set (getNumThreads then reports the cores).
   int numThreads_ = 0;
   // parameter(...): each maps one value onto objects' arguments.
-  struct ParameterTarget {
-    std::string kind;  // "element" or "node"
-    int tag = 0;
-    std::vector<std::string> args;  // the element's parameter name, or the node's dim
-  };
-  struct Parameter {
-    std::vector<ParameterTarget> targets;
-    double value = 0.0;
-  };
-  std::map<int, Parameter> parameters_;
+  ParameterMap parameters_;
+  // The last sensitivities (sensitivityAlgorithm); kept past wipeAnalysis.
+  SensitivityResults sensitivityResults_;
   // A copy of the material under testUniaxialMaterial; setStrain commits it.
   std::unique_ptr<UniaxialMaterial> testMaterial_;
 };

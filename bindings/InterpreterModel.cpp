@@ -57,6 +57,7 @@ Result Interpreter::wipe(CommandArgs& a) {
   eigenvalues_.clear();
   haveModalProperties_ = false;
   parameters_.clear();
+  sensitivityResults_.clear();
   testMaterial_.reset();
   if (recorderFailure) std::rethrow_exception(recorderFailure);
   return {};

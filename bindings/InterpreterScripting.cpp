@@ -293,7 +293,7 @@ Result Interpreter::parameterCommand(CommandArgs& a, const char* command, bool a
     return static_cast<long long>(tag);
   }
   // The target is checked whole before the parameter exists.
-  ParameterTarget target;
+  Parameter::Target target;
   double value = 0.0;
   target.kind = a.nextString("object type ('element' or 'node')");
   if (target.kind == "element") {
@@ -330,7 +330,7 @@ Result Interpreter::updateParameter(CommandArgs& a) {
   a.expectEnd();
   auto it = parameters_.find(tag);
   if (it == parameters_.end()) a.fail("parameter " + std::to_string(tag) + " does not exist");
-  for (const ParameterTarget& t : it->second.targets) {
+  for (const Parameter::Target& t : it->second.targets) {
     if (t.kind == "element") {
       Element& e = domain_->element(t.tag, a.context());
       if (!e.setParameter(t.args, value)) {
@@ -365,6 +365,61 @@ Result Interpreter::getParamValue(CommandArgs& a) {
   auto it = parameters_.find(tag);
   if (it == parameters_.end()) a.fail("parameter " + std::to_string(tag) + " does not exist");
   return it->second.value;
+}
+
+// sensitivityAlgorithm(<'-computeAtEachStep' | '-computeByCommand'>): the
+// direct differentiation method after every converged step of the analysis
+// (SensitivityAlgorithm). Either option computes at every step, since the
+// sensitivity of a path-dependent history needs every step.
+Result Interpreter::sensitivityAlgorithm(CommandArgs& a) {
+  a.setContext("sensitivityAlgorithm");
+  if (!a.done()) {
+    const std::size_t at = a.position();
+    const std::string option = a.nextString("option");
+    if (option != "-computeAtEachStep" && option != "-computeByCommand")
+      a.failAt(at, "option", "'-computeAtEachStep' or '-computeByCommand'");
+  }
+  a.expectEnd();
+  components_.sensitivity = std::make_unique<SensitivityAlgorithm>(parameters_, sensitivityResults_);
+  return {};
+}
+
+// computeGradients(): the gradients of the last converged step are current
+// already (computed with it); 0 when a sensitivity algorithm is defined.
+Result Interpreter::computeGradients(CommandArgs& a) {
+  a.expectEnd();
+  if (!components_.sensitivity) a.fail("no sensitivity algorithm: call sensitivityAlgorithm(...) first");
+  return 0LL;
+}
+
+// sensNodeDisp(nodeTag, dof, paramTag): d u / d theta of the last converged
+// step (0 before any).
+Result Interpreter::sensNodeDisp(CommandArgs& a) {
+  const int nodeTag = a.nextInt("nodeTag");
+  a.setContext("sensNodeDisp " + std::to_string(nodeTag));
+  const std::size_t dofAt = a.position();
+  const int dof = a.nextInt("dof");
+  const int paramTag = a.nextInt("paramTag");
+  a.expectEnd();
+  const Node& node = domain_->node(nodeTag, a.context());
+  if (dof < 1 || dof > node.ndf()) a.failAt(dofAt, "dof", "a dof in 1.." + std::to_string(node.ndf()));
+  if (parameters_.find(paramTag) == parameters_.end()) a.fail("parameter " + std::to_string(paramTag) + " does not exist");
+  const int k = sensitivityResults_.gradientOf(paramTag);
+  auto it = sensitivityResults_.nodeDisp.find(nodeTag);
+  if (k < 0 || it == sensitivityResults_.nodeDisp.end()) return 0.0;
+  return it->second(dof - 1, k);
+}
+
+// sensLambda(patternTag, paramTag): d lambda / d theta; 0 under load control,
+// the only integrator sensitivities are computed with.
+Result Interpreter::sensLambda(CommandArgs& a) {
+  const int patternTag = a.nextInt("patternTag");
+  a.setContext("sensLambda " + std::to_string(patternTag));
+  const int paramTag = a.nextInt("paramTag");
+  a.expectEnd();
+  if (!domain_->findPattern(patternTag)) a.fail("load pattern " + std::to_string(patternTag) + " does not exist");
+  if (parameters_.find(paramTag) == parameters_.end()) a.fail("parameter " + std::to_string(paramTag) + " does not exist");
+  return 0.0;
 }
 
 // setElementRayleighDampingFactors(eleTag, alphaM, betaK, betaK0, betaKc):

@@ -28,6 +28,16 @@ class DispBeamColumn2d : public SectionBeamColumn2d {
   Vector3 basicForce() override { return sectionForce_ + q0_; }
   const Matrix3& basicStiffness() override { return kb_; }
 
+  // Sensitivity (sensitivityAlgorithm): the sections' parameters (material
+  // and geometric) and the end nodes' coordinates. The sections' forces and
+  // history are differentiated by the sections; what the element's geometry
+  // adds (a coordinate moves the chord, so L, the transformation and every
+  // section's deformation) is taken by central differences of the element
+  // at the trial displacements with the history held.
+  int sensitivityParameter(const std::vector<std::string>& args) override;
+  Vector resistingForceSensitivity(int gradient, const SensitivityParameter& p) override;
+  void commitSensitivity(int gradient, const SensitivityParameter& p, const Vector& dU, int numGradients) override;
+
   // Strain-displacement matrix of one section (rows follow its codes).
   static Interpolation strainDisplacement(const std::vector<SectionCode>& codes, double xi, double length);
 
@@ -36,6 +46,17 @@ class DispBeamColumn2d : public SectionBeamColumn2d {
 
  private:
   void assemble();
+  // Section deformations B v at the nodes' trial displacements.
+  std::vector<SectionVector> sectionDeformations();
+  // Moves coordinate `dim` of end node `node` to `value` and re-reads the geometry.
+  void moveNode(int node, int dim, double value);
+
+  // Per sensitivity parameter: its name and each section's id for it.
+  struct SensitivityBinding {
+    std::vector<std::string> args;
+    std::vector<int> sectionIds;
+  };
+  std::vector<SensitivityBinding> sensitivity_;
 
   std::vector<Interpolation> strainDisplacement_;
   Vector3 sectionForce_ = Vector3::Zero();

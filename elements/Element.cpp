@@ -42,6 +42,29 @@ void Element::reconnect(std::vector<int> nodeTags) {
   domain_->elementReconnected(*this, oldTags);
 }
 
+void Element::rereadGeometry() {
+  if (!domain_) throw OpenSeesError(context() + ": not in a domain");
+  connect(*domain_);
+}
+
+void Element::noSensitivity(const std::string& why) const {
+  throw OpenSeesError(context() + " does not compute sensitivities (sensitivityAlgorithm): " + why);
+}
+
+int Element::sensitivityParameter(const std::vector<std::string>&) { return 0; }
+
+Vector Element::resistingForceSensitivity(int, const SensitivityParameter& p) {
+  // Without history, an element theta does not reach answers zero.
+  if (hasConstantTangent() && p.id == 0 && p.node < 0) return Vector::Zero(numDOF());
+  noSensitivity(p.node >= 0 ? "a coordinate of its node " + std::to_string(nodeTags()[p.node]) + " is a parameter"
+                            : "its response depends on the parameter or on its own history");
+}
+
+void Element::commitSensitivity(int, const SensitivityParameter& p, const Vector&, int) {
+  if (hasConstantTangent() && p.id == 0 && p.node < 0) return;
+  noSensitivity("it keeps no sensitivity of its history");
+}
+
 MatrixView Element::massMatrix() {
   if (zeroMass_.rows() != numDOF_) zeroMass_ = Matrix::Zero(numDOF_, numDOF_);
   return viewOf(zeroMass_);

@@ -99,6 +99,29 @@ class Element {
   // displacements, so InitialStateAnalysis('off') keeps their values.
   virtual std::vector<int> multiplierNodes() const { return {}; }
 
+  // --- Sensitivity (direct differentiation, sensitivityAlgorithm) ------------
+  // A parameter theta as this element sees it: `id` > 0 when theta is one of
+  // the element's own arguments (the value sensitivityParameter() gave for
+  // its name), `node` >= 0 and `dim` when theta is a coordinate of
+  // nodes()[node]; neither when theta belongs to other objects only (the
+  // element's history still depends on it through its displacements).
+  struct SensitivityParameter {
+    int id = 0;
+    int node = -1, dim = -1;
+  };
+  // The id (> 0) of the element argument named by `args` (as setParameter
+  // reads them), 0 if the element has none of that name.
+  virtual int sensitivityParameter(const std::vector<std::string>& args);
+  // d R / d theta at the nodes' trial displacements: the element's own
+  // dependence on theta and that of its history (committed sensitivities of
+  // gradient `gradient`). The default serves elements without history that
+  // theta does not reach (linear elastic ones); others throw.
+  virtual Vector resistingForceSensitivity(int gradient, const SensitivityParameter& p);
+  // After the nodes' displacement sensitivities of `gradient` are known
+  // (dU, in element dof order): keeps the history's sensitivities of the
+  // trial state; numGradients sizes the storage.
+  virtual void commitSensitivity(int gradient, const SensitivityParameter& p, const Vector& dU, int numGradients);
+
   // Solver needs: a tangent that is unsymmetric, or has zero diagonal
   // entries (Lagrange multipliers), cannot go to an SPD-only solver.
   virtual bool needsGeneralSolver() const { return false; }
@@ -131,6 +154,11 @@ class Element {
   void reconnect(std::vector<int> nodeTags);
   // "element <className> <tag>", the prefix of this element's messages.
   std::string context() const;
+  // Re-reads the nodes' coordinates (connect() again): sensitivities to a
+  // node coordinate evaluate the element at nearby positions.
+  void rereadGeometry();
+  // Throws: this element cannot compute sensitivities (`why`).
+  [[noreturn]] void noSensitivity(const std::string& why) const;
 
  private:
   int tag_;

@@ -208,4 +208,14 @@ SectionBeamColumn2d::Definition SectionBeamColumn2d::parse(CommandArgs& args, Do
   return d;
 }
 
+bool SectionBeamColumn2d::setParameter(const std::vector<std::string>& args, double value) {
+  bool accepted = false;
+  for (auto& s : sections_) accepted = s->setParameter(args, value) || accepted;
+  if (accepted) {
+    initializeState();  // the initial stiffness follows
+    initialStiff_ = transf_->initialGlobalStiffMatrix(initialBasicStiffness_);
+  }
+  return accepted;
+}
+
 }  // namespace beamsolid

@@ -63,6 +63,9 @@ class SectionBeamColumn2d : public Element {
   void print(std::ostream& os) const override;
   void printJSON(std::ostream& os) const override;
 
+  // updateParameter: the sections' (and their materials') parameters.
+  bool setParameter(const std::vector<std::string>& args, double value) override;
+
   double length() const { return length_; }
   const CrdTransf2d& transformation() const { return *transf_; }
   int numSections() const { return static_cast<int>(sections_.size()); }

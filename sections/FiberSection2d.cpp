@@ -210,6 +210,121 @@ void FiberSection2d::print(std::ostream& os) const {
      << yBar_ << ", EA " << initialTangent_(0, 0) << ", EIz " << initialTangent_(1, 1) << '\n';
 }
 
+void FiberSection2d::placeFiber(std::size_t i, double y, double area) {
+  fibers_.at(i).y = y;
+  fibers_.at(i).area = area;
+}
+
+void FiberSection2d::updateGeometry() {
+  area_ = areaY_ = 0.0;
+  initialSums_ = Sums{};
+  for (const Fiber& f : fibers_) {
+    area_ += f.area;
+    areaY_ += f.area * f.y;
+    const double E = f.material->initialTangent() * f.area;
+    initialSums_.stiffness += E;
+    initialSums_.stiffY += E * f.y;
+    initialSums_.stiffYY += E * f.y * f.y;
+  }
+  yBar_ = area_ > 0.0 ? areaY_ / area_ : 0.0;
+  const double b = yBar_;
+  const Sums& i = initialSums_;
+  const double iPM = -(i.stiffY - b * i.stiffness);
+  initialTangent_ << i.stiffness, iPM, iPM, i.stiffYY - 2.0 * b * i.stiffY + b * b * i.stiffness;
+}
+
+bool FiberSection2d::setParameter(const std::vector<std::string>& args, double value) {
+  if (const int id = geometryParameter(args)) {
+    setGeometry(id, value);
+    updateGeometry();
+    setTrialDeformation(deformation_);
+    return true;
+  }
+  bool accepted = false;
+  for (Fiber& f : fibers_) accepted = f.material->setParameter(args, value) || accepted;
+  if (accepted) {
+    updateGeometry();  // the initial tangent follows E
+    setTrialDeformation(deformation_);
+  }
+  return accepted;
+}
+
+int FiberSection2d::sensitivityParameter(const std::vector<std::string>& args) {
+  for (std::size_t k = 0; k < sensitivity_.size(); ++k)
+    if (sensitivity_[k].args == args) return static_cast<int>(k) + 1;
+  SensitivityBinding b{args, geometryParameter(args), {}};
+  bool any = b.geometry > 0;
+  for (const Fiber& f : fibers_) {
+    b.fiberIds.push_back(f.material->sensitivityParameter(args));
+    any = any || b.fiberIds.back() > 0;
+  }
+  if (!any) return 0;
+  sensitivity_.push_back(std::move(b));
+  return static_cast<int>(sensitivity_.size());
+}
+
+std::vector<double> FiberSection2d::offsetsAt(int id, double value) {
+  setGeometry(id, value);
+  updateGeometry();
+  std::vector<double> offsets;
+  offsets.reserve(fibers_.size());
+  for (const Fiber& f : fibers_) offsets.push_back(f.y - yBar_);
+  return offsets;
+}
+
+namespace {
+// The step of a central difference in a geometric value.
+double geometryStep(double value) { return 1e-6 * (value != 0.0 ? std::fabs(value) : 1.0); }
+}  // namespace
+
+SectionForceDeformation2d::Vector FiberSection2d::forceSensitivity(int gradient, int parameterId) {
+  const SensitivityBinding* b = parameterId > 0 ? &sensitivity_.at(parameterId - 1) : nullptr;
+  Vector ds = Vector::Zero(2);
+  for (std::size_t i = 0; i < fibers_.size(); ++i) {
+    const Fiber& f = fibers_[i];
+    const double dsigma = f.material->stressSensitivity(gradient, b ? b->fiberIds[i] : 0) * f.area;
+    ds[0] += dsigma;
+    ds[1] -= dsigma * (f.y - yBar_);
+  }
+  if (b && b->geometry > 0) {
+    const double value = geometryValue(b->geometry), h = geometryStep(value);
+    const Vector e = deformation_;
+    Vector plus, minus;
+    setGeometry(b->geometry, value + h);
+    updateGeometry();
+    setTrialDeformation(e);
+    plus = force_;
+    setGeometry(b->geometry, value - h);
+    updateGeometry();
+    setTrialDeformation(e);
+    minus = force_;
+    setGeometry(b->geometry, value);
+    updateGeometry();
+    setTrialDeformation(e);
+    ds += (plus - minus) / (2.0 * h);
+  }
+  return ds;
+}
+
+void FiberSection2d::commitSensitivity(const Vector& de, int gradient, int parameterId, int numGradients) {
+  const SensitivityBinding* b = parameterId > 0 ? &sensitivity_.at(parameterId - 1) : nullptr;
+  // A geometric parameter moves the fibers: their offsets from the centroid change too.
+  std::vector<double> dOffset(fibers_.size(), 0.0);
+  if (b && b->geometry > 0) {
+    const double value = geometryValue(b->geometry), h = geometryStep(value);
+    const std::vector<double> plus = offsetsAt(b->geometry, value + h);
+    const std::vector<double> minus = offsetsAt(b->geometry, value - h);
+    setGeometry(b->geometry, value);
+    updateGeometry();
+    for (std::size_t i = 0; i < fibers_.size(); ++i) dOffset[i] = (plus[i] - minus[i]) / (2.0 * h);
+  }
+  for (std::size_t i = 0; i < fibers_.size(); ++i) {
+    Fiber& f = fibers_[i];
+    const double dStrain = de[0] - (f.y - yBar_) * de[1] - dOffset[i] * deformation_[1];
+    f.material->commitSensitivity(dStrain, gradient, b ? b->fiberIds[i] : 0, numGradients);
+  }
+}
+
 std::unique_ptr<FiberSection2d> FiberSection2d::build(CommandArgs& args, Domain& domain, int tag) {
   auto section = std::make_unique<FiberSection2d>(tag);
   while (!args.done()) {

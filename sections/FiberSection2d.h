@@ -61,7 +61,28 @@ class FiberSection2d : public SectionForceDeformation2d {
   Response setResponse(const std::vector<std::string>& args) override;
   void print(std::ostream& os) const override;
 
+  // Materials' parameters reach every fiber whose material has the name;
+  // geometric ones (geometryParameter) move and resize the fibers.
+  bool setParameter(const std::vector<std::string>& args, double value) override;
+  int sensitivityParameter(const std::vector<std::string>& args) override;
+  // Materials' parts by their own sensitivities; a geometric parameter's by
+  // central differences of the section at the trial deformation with the
+  // history held (exact for the fiber layouts, which are linear in theta).
+  Vector forceSensitivity(int gradient, int parameterId) override;
+  void commitSensitivity(const Vector& deformationSensitivity, int gradient, int parameterId,
+                         int numGradients) override;
+
  protected:
+  // Geometric parameters of a section that lays out its own fibers (id > 0,
+  // 0 if none of that name), their values, and the fibers at a new value.
+  virtual int geometryParameter(const std::vector<std::string>&) const { return 0; }
+  virtual double geometryValue(int) const { return 0.0; }
+  virtual void setGeometry(int, double) {}
+  // Moves fiber i (setGeometry); updateGeometry() then sums the section anew
+  // without touching the fibers' states.
+  void placeFiber(std::size_t i, double y, double area);
+  void updateGeometry();
+
   // Sums over the fibers about y = 0, shifted to the centroid when read.
   struct Sums {
     double force = 0.0, firstMoment = 0.0;                 // sum sigma A, sum sigma A y
@@ -74,6 +95,16 @@ class FiberSection2d : public SectionForceDeformation2d {
   // The state about the (new) centroid after fibers were added.
   void refresh();
   bool deferred_ = false;
+  // (y - yBar) of every fiber with geometry parameter `id` at `value`.
+  std::vector<double> offsetsAt(int id, double value);
+  // Sensitivity parameters: what names them, the geometric id (0 for a
+  // material's), each fiber material's id.
+  struct SensitivityBinding {
+    std::vector<std::string> args;
+    int geometry = 0;
+    std::vector<int> fiberIds;
+  };
+  std::vector<SensitivityBinding> sensitivity_;
 
   std::vector<Fiber> fibers_;
   double area_ = 0.0, areaY_ = 0.0, yBar_ = 0.0;

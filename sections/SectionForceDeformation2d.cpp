@@ -13,6 +13,14 @@ const SectionForceDeformation2d& SectionForceDeformation2d::of(const BeamSection
   return *s;
 }
 
+SectionForceDeformation2d::Vector SectionForceDeformation2d::forceSensitivity(int, int) {
+  throw OpenSeesError(context() + " does not compute sensitivities (sensitivityAlgorithm)");
+}
+
+void SectionForceDeformation2d::commitSensitivity(const Vector&, int gradient, int parameterId, int) {
+  forceSensitivity(gradient, parameterId);
+}
+
 Response SectionForceDeformation2d::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
   const std::string& what = args[0];

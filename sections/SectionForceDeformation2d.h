@@ -42,6 +42,20 @@ class SectionForceDeformation2d : public BeamSection {
   // (deformations first), 'stiffness' (order x order, row by row), in the
   // order of codes().
   Response setResponse(const std::vector<std::string>& args) override;
+
+  // updateParameter through an element: true when the section or one of
+  // its materials took the value.
+  virtual bool setParameter(const std::vector<std::string>&, double) { return false; }
+  // Sensitivity (sensitivityAlgorithm). The id (> 0) of the parameter named
+  // by args that the section or its materials have, 0 if none.
+  virtual int sensitivityParameter(const std::vector<std::string>&) { return 0; }
+  // d s / d theta at the trial deformation: through theta itself
+  // (parameterId, 0 when theta is not this section's) and through the
+  // committed history's sensitivities of `gradient`. Throws by default.
+  virtual Vector forceSensitivity(int gradient, int parameterId);
+  // Keeps the trial history's sensitivities, given d e / d theta.
+  virtual void commitSensitivity(const Vector& deformationSensitivity, int gradient, int parameterId,
+                                 int numGradients);
 };
 
 }  // namespace beamsolid

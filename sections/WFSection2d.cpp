@@ -2,12 +2,17 @@
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
+#include "core/OpenSeesError.h"
 #include "core/Registry.h"
 
 namespace beamsolid {
 
 WFSection2d::WFSection2d(int tag, const UniaxialMaterial& material, const Dimensions& w)
     : FiberSection2d(tag), dimensions_(w) {
+  for (const Strip& s : layout(w)) addFiber(material, s.y, s.area);
+}
+
+std::vector<WFSection2d::Strip> WFSection2d::layout(const Dimensions& w) {
   const double webHeight = w.d - 2.0 * w.tf;
   // Nfw or Nff = 0 leaves the web or the flanges out, as OpenSees does.
   const double webStrip = w.webFibers > 0 ? webHeight / w.webFibers : 0.0;
@@ -16,11 +21,41 @@ WFSection2d::WFSection2d(int tag, const UniaxialMaterial& material, const Dimens
   const int flangeFibers = w.tf > 0.0 ? w.flangeFibers : 0;
   // Fibers run from the top of the section down (top flange, web, bottom
   // flange): OpenSees numbers them so, and 'fiber $i' responses use that order.
+  std::vector<Strip> strips;
+  for (int k = 0; k < flangeFibers; ++k) strips.push_back({0.5 * w.d - (k + 0.5) * flangeStrip, w.bf * flangeStrip});
+  for (int k = 0; k < w.webFibers; ++k) strips.push_back({0.5 * webHeight - (k + 0.5) * webStrip, w.tw * webStrip});
   for (int k = 0; k < flangeFibers; ++k)
-    addFiber(material, 0.5 * w.d - (k + 0.5) * flangeStrip, w.bf * flangeStrip);
-  for (int k = 0; k < w.webFibers; ++k) addFiber(material, 0.5 * webHeight - (k + 0.5) * webStrip, w.tw * webStrip);
-  for (int k = 0; k < flangeFibers; ++k)
-    addFiber(material, -0.5 * webHeight - (k + 0.5) * flangeStrip, w.bf * flangeStrip);
+    strips.push_back({-0.5 * webHeight - (k + 0.5) * flangeStrip, w.bf * flangeStrip});
+  return strips;
+}
+
+int WFSection2d::geometryParameter(const std::vector<std::string>& args) const {
+  if (args.empty()) return 0;
+  const std::string& n = args[0];
+  if (n == "d") return 1;
+  if (n == "tw") return 2;
+  if (n == "bf") return 3;
+  if (n == "tf") return 4;
+  return 0;
+}
+
+double WFSection2d::geometryValue(int id) const {
+  const Dimensions& w = dimensions_;
+  return id == 1 ? w.d : id == 2 ? w.tw : id == 3 ? w.bf : w.tf;
+}
+
+void WFSection2d::setGeometry(int id, double value) {
+  Dimensions w = dimensions_;
+  (id == 1 ? w.d : id == 2 ? w.tw : id == 3 ? w.bf : w.tf) = value;
+  const std::vector<Strip> strips = layout(w);
+  // The fibers keep their materials' states: only their places change, so
+  // the layout must keep its number of fibers (no flanges appear or vanish).
+  if (strips.size() != numFibers() || !(w.d > 2.0 * w.tf) || !(w.tw > 0.0) || !(w.bf > 0.0) ||
+      (dimensions_.tf > 0.0) != (w.tf > 0.0))
+    throw OpenSeesError(context() + ": cannot take " + std::string(id == 1 ? "d" : id == 2 ? "tw" : id == 3 ? "bf" : "tf") +
+                        " = " + std::to_string(value) + " (the section would change its fibers or vanish)");
+  dimensions_ = w;
+  for (std::size_t i = 0; i < strips.size(); ++i) placeFiber(i, strips[i].y, strips[i].area);
 }
 
 std::unique_ptr<SectionForceDeformation2d> WFSection2d::clone() const { return std::make_unique<WFSection2d>(*this); }

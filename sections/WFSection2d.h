@@ -20,7 +20,19 @@ class WFSection2d : public FiberSection2d {
   std::unique_ptr<SectionForceDeformation2d> clone() const override;
   const Dimensions& dimensions() const { return dimensions_; }
 
+ protected:
+  // 'd', 'tw', 'bf', 'tf' (ids 1-4): parameters that move the fibers.
+  int geometryParameter(const std::vector<std::string>& args) const override;
+  double geometryValue(int id) const override;
+  void setGeometry(int id, double value) override;
+
  private:
+  struct Strip {
+    double y, area;
+  };
+  // The fibers' positions and areas, top flange first (see the class comment).
+  static std::vector<Strip> layout(const Dimensions& w);
+
   Dimensions dimensions_;
 };
 

@@ -53,6 +53,27 @@ bool ElasticMaterial::setParameter(const std::vector<std::string>& args, double 
   return false;
 }
 
+int ElasticMaterial::sensitivityParameter(const std::vector<std::string>& args) {
+  if (args.empty()) return 0;
+  if (args[0] == "E") return 1;
+  if (args[0] == "Epos") return 2;
+  if (args[0] == "Eneg") return 3;
+  if (args[0] == "eta") return 4;
+  return 0;
+}
+
+double ElasticMaterial::stressSensitivity(int, int parameterId) {
+  const bool tension = trialStrain_ > 0.0;
+  switch (parameterId) {
+    // 'E' moves Eneg with it while the two are equal (setParameter).
+    case 1: return tension || Eneg_ == E_ ? trialStrain_ : 0.0;
+    case 2: return tension ? trialStrain_ : 0.0;
+    case 3: return tension ? 0.0 : trialStrain_;
+    case 4: return trialStrainRate_;
+    default: return 0.0;
+  }
+}
+
 void ElasticMaterial::print(std::ostream& os) const {
   os << "UniaxialMaterial " << tag() << " type Elastic E " << E_ << " eta " << eta_ << " Eneg " << Eneg_
      << '\n';

@@ -29,6 +29,10 @@ class ElasticMaterial : public UniaxialMaterial {
 
   // 'E', 'Epos', 'Eneg', 'eta'.
   bool setParameter(const std::vector<std::string>& args, double value) override;
+  // Sensitivity to 'E' (1), 'Epos' (2), 'Eneg' (3), 'eta' (4); no history.
+  int sensitivityParameter(const std::vector<std::string>& args) override;
+  double stressSensitivity(int gradient, int parameterId) override;
+  void commitSensitivity(double, int, int, int) override {}
   void print(std::ostream& os) const override;
 
  private:

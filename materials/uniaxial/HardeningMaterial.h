@@ -1,4 +1,6 @@
 #pragma once
+#include <vector>
+
 #include "materials/uniaxial/UniaxialMaterial.h"
 
 namespace beamsolid {
@@ -31,15 +33,34 @@ class HardeningMaterial : public UniaxialMaterial {
   double plasticStrain() const { return trial_.plasticStrain; }
   double backStress() const { return trial_.backStress; }
 
+  // 'E', 'sigmaY' (or 'Fy', 'fy'), 'H_iso' (or 'Hiso'), 'H_kin' (or 'Hkin').
+  bool setParameter(const std::vector<std::string>& args, double value) override;
+  // Sensitivities by differentiating the return map (the same names, ids 1-4).
+  int sensitivityParameter(const std::vector<std::string>& args) override;
+  double stressSensitivity(int gradient, int parameterId) override;
+  void commitSensitivity(double strainSensitivity, int gradient, int parameterId, int numGradients) override;
+
   void print(std::ostream& os) const override;
 
  private:
+  // How the trial state was reached from the committed one.
+  enum class Branch { Unchanged, Elastic, Plastic };
   struct State {
     double strain = 0.0, stress = 0.0, tangent = 0.0;
     double plasticStrain = 0.0, backStress = 0.0, alpha = 0.0;
+    Branch branch = Branch::Unchanged;
+    double dGamma = 0.0, sign = 1.0;
   };
+  // d/d theta of the committed state's stress and history.
+  struct Sensitivity {
+    double stress = 0.0, plasticStrain = 0.0, backStress = 0.0, alpha = 0.0;
+  };
+  // The trial state's sensitivity for a strain sensitivity dStrain.
+  Sensitivity trialSensitivity(double dStrain, int gradient, int parameterId) const;
+
   double E_, sigmaY_, Hiso_, Hkin_;
   State trial_, committed_;
+  std::vector<Sensitivity> sensitivity_;  // one per gradient
 };
 
 }  // namespace beamsolid

@@ -1,5 +1,7 @@
 #include "materials/uniaxial/UniaxialMaterial.h"
 
+#include "core/OpenSeesError.h"
+
 namespace beamsolid {
 
 Response UniaxialMaterial::setResponse(const std::vector<std::string>& args) {
@@ -16,6 +18,16 @@ Response UniaxialMaterial::setResponse(const std::vector<std::string>& args) {
               return v;
             }};
   return {};
+}
+
+double UniaxialMaterial::stressSensitivity(int, int parameterId) {
+  if (isLinear() && parameterId == 0) return 0.0;
+  throw OpenSeesError("uniaxialMaterial " + className() + " " + std::to_string(tag_) +
+                      " does not compute sensitivities (sensitivityAlgorithm)");
+}
+
+void UniaxialMaterial::commitSensitivity(double, int gradient, int parameterId, int) {
+  stressSensitivity(gradient, parameterId);  // the same refusal for materials with history
 }
 
 void UniaxialMaterial::print(std::ostream& os) const {

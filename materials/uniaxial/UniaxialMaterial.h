@@ -36,6 +36,18 @@ class UniaxialMaterial {
   // 'stress', 'strain', 'tangent', 'stressStrain' by default.
   virtual Response setResponse(const std::vector<std::string>& args);
   virtual bool setParameter(const std::vector<std::string>&, double) { return false; }
+
+  // Sensitivity (direct differentiation, sensitivityAlgorithm). The id (> 0)
+  // of the argument named args[0], 0 if the material has none of that name.
+  virtual int sensitivityParameter(const std::vector<std::string>&) { return 0; }
+  // d stress / d theta at the trial strain: through theta itself
+  // (parameterId, 0 when theta is not this material's) and through the
+  // committed history's sensitivities of `gradient`. The default serves
+  // linear materials theta does not reach; others throw.
+  virtual double stressSensitivity(int gradient, int parameterId);
+  // Keeps the trial history's sensitivities of `gradient`, given the
+  // strain's (d strain / d theta); numGradients sizes the storage.
+  virtual void commitSensitivity(double strainSensitivity, int gradient, int parameterId, int numGradients);
   virtual void print(std::ostream& os) const;
 
  private:

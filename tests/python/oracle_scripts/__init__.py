@@ -8,6 +8,7 @@ script its own).
 """
 
 SCRIPTS = (
+    "sensitivity_2d",
     "layered_shells",
     "orthotropic",
     "beam_releases_3d",
