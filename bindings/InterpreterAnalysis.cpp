@@ -296,7 +296,6 @@ Result Interpreter::region(CommandArgs& a) {
              "-nodeOnlyRange or -rayleigh)");
     }
   }
-  if (!domain_->addRegionTag(tag)) a.fail("region with tag " + std::to_string(tag) + " already exists");
   std::vector<Element*> regionEles;
   std::vector<Node*> regionNodes;
   if (haveEles) {
@@ -313,6 +312,10 @@ Result Interpreter::region(CommandArgs& a) {
         if (std::all_of(e->nodeTags().begin(), e->nodeTags().end(), [&](int n) { return nodes.count(n) > 0; }))
           regionEles.push_back(e.get());
   }
+  Domain::Region held;
+  for (const Node* n : regionNodes) held.nodes.push_back(n->tag());
+  for (const Element* e : regionEles) held.elements.push_back(e->tag());
+  if (!domain_->addRegion(tag, std::move(held))) a.fail("region with tag " + std::to_string(tag) + " already exists");
   if (factors) {
     for (Element* e : regionEles) e->setRegionRayleigh(*factors);
     for (Node* n : regionNodes) n->setRegionAlphaM(factors->alphaM);

@@ -51,7 +51,9 @@ Result Interpreter::wipe(CommandArgs& a) {
   analysis_.reset();
   components_ = AnalysisComponents{};
   haveAnalysis_ = false;
+  const int nextRecorderTag = domain_->nextRecorderTag();
   domain_ = std::make_unique<Domain>();
+  domain_->setNextRecorderTag(nextRecorderTag);
   currentPatternTag_ = -1;
   currentSectionTag_ = -1;
   eigenvalues_.clear();

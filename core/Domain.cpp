@@ -104,6 +104,12 @@ void Domain::nodeMoved(int tag, const std::string& context) {
   touch();
 }
 
+const Domain::Region& Domain::region(int tag, const std::string& context) const {
+  auto it = regions_.find(tag);
+  if (it == regions_.end()) throw OpenSeesError(context + ": region " + std::to_string(tag) + " does not exist");
+  return it->second;
+}
+
 Element* Domain::findElement(int tag) const {
   auto it = elements_.find(tag);
   return it == elements_.end() ? nullptr : it->second.get();

@@ -132,6 +132,8 @@ class Domain {
   // The tag addRecorder gives next: a recorder being built names itself by
   // it when it claims its file (OutputFileClaim).
   int nextRecorderTag() const { return nextRecorderTag_; }
+  // OpenSees numbers recorders on across wipe(): the new Domain goes on from the old one's count.
+  void setNextRecorderTag(int tag) { nextRecorderTag_ = tag; }
   void record();
   void flushRecorders();
 
@@ -152,8 +154,16 @@ class Domain {
   // modalDamping(...): damping by the modes of the last eigen; null when none.
   const ModalDamping* modalDamping() const { return modalDamping_.get(); }
   void setModalDamping(std::unique_ptr<ModalDamping> d) { modalDamping_ = std::move(d); }
-  // Tags of the region() commands so far; false for a tag already used.
-  bool addRegionTag(int tag) { return regionTags_.insert(tag).second; }
+  // region(): the nodes and elements a region holds (as OpenSees: a region of
+  // elements holds their nodes too, one of nodes the elements all of whose
+  // nodes it holds, unless made with an '-...Only' option). False for a tag
+  // already used.
+  struct Region {
+    std::vector<int> nodes, elements;
+  };
+  bool addRegion(int tag, Region region) { return regions_.emplace(tag, std::move(region)).second; }
+  // The region with this tag; an OpenSeesError naming `context` if none.
+  const Region& region(int tag, const std::string& context) const;
 
   // --- state ---------------------------------------------------------------------
   // True while a transient analysis runs (elements that treat impact
@@ -214,7 +224,7 @@ class Domain {
   int nextMPTag_ = 0;
   RayleighFactors rayleigh_;
   bool regionRayleigh_ = false;
-  std::set<int> regionTags_;
+  std::map<int, Region> regions_;
   std::vector<double> eigenvalues_;
   std::unique_ptr<ModalDamping> modalDamping_;
   double currentTime_ = 0.0;

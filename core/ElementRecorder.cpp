@@ -36,7 +36,10 @@ ElementRecorder::Spec ElementRecorder::Spec::parse(CommandArgs& args, const Doma
       if (found == 0) args.fail("'-eleRange' " + std::to_string(first) + " " + std::to_string(last) +
                                 ": no element has a tag in this range");
     } else if (args.nextFlag("-region")) {
-      args.fail("'-region' is not supported; use '-ele', *tags or '-eleRange', first, last");
+      const int tag = args.nextInt("regTag");
+      const Domain::Region& region = domain.region(tag, s.context);
+      if (region.elements.empty()) args.fail("region " + std::to_string(tag) + " holds no elements");
+      s.elementTags.insert(s.elementTags.end(), region.elements.begin(), region.elements.end());
     } else if (args.nextIsString()) {
       // Everything from here on belongs to the element.
       s.responseArgs = args.restAsStrings();
@@ -45,7 +48,8 @@ ElementRecorder::Spec ElementRecorder::Spec::parse(CommandArgs& args, const Doma
     }
   }
   s.output.requireFile(args);
-  if (s.elementTags.empty()) args.fail("no elements given; expected '-ele', *tags or '-eleRange', first, last");
+  if (s.elementTags.empty())
+    args.fail("no elements given; expected '-ele', *tags, '-eleRange', first, last or '-region', regTag");
   if (s.responseArgs.empty()) args.fail("the response is missing, e.g. 'force'");
   for (int t : s.elementTags) domain.element(t, s.context);
   return s;

@@ -75,6 +75,11 @@ NodeRecorder::Spec NodeRecorder::Spec::parse(CommandArgs& args, const Domain& do
         }
       if (found == 0) args.fail("'-nodeRange' " + std::to_string(first) + " " + std::to_string(last) +
                                 ": no node has a tag in this range");
+    } else if (args.nextFlag("-region")) {
+      const int tag = args.nextInt("regTag");
+      const Domain::Region& region = domain.region(tag, s.context);
+      if (region.nodes.empty()) args.fail("region " + std::to_string(tag) + " holds no nodes");
+      s.nodeTags.insert(s.nodeTags.end(), region.nodes.begin(), region.nodes.end());
     } else if (args.nextFlag("-dof")) {
       const std::size_t at = args.position();
       for (int d : args.nextInts("dof", 1)) {
@@ -107,7 +112,8 @@ NodeRecorder::Spec NodeRecorder::Spec::parse(CommandArgs& args, const Domain& do
   if (!haveResponse) args.fail(std::string("the response type is missing; expected one of ") + kResponseList);
   args.expectEnd();
   s.output.requireFile(args);
-  if (s.nodeTags.empty()) args.fail("no nodes given; expected '-node', *tags or '-nodeRange', first, last");
+  if (s.nodeTags.empty())
+    args.fail("no nodes given; expected '-node', *tags, '-nodeRange', first, last or '-region', regTag");
 
   int maxNdf = 0;
   for (int t : s.nodeTags) maxNdf = std::max(maxNdf, domain.node(t, s.context).ndf());

@@ -39,6 +39,8 @@ class ElasticBeam2d : public Element {
 
   std::string className() const override { return "elasticBeamColumn"; }
   bool hasConstantTangent() const override { return transf_->className() == "Linear"; }
+  // Every 2D transformation is stateless: no history with any of them.
+  bool hasHistory() const override { return false; }
   bool supportsSpace(int ndm) const override { return ndm == 2; }
 
   void update() override { transf_->update(); }

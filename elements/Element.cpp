@@ -1,5 +1,7 @@
 #include "elements/Element.h"
 
+#include <algorithm>
+
 #include "core/Domain.h"
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
@@ -54,14 +56,31 @@ void Element::noSensitivity(const std::string& why) const {
 int Element::sensitivityParameter(const std::vector<std::string>&) { return 0; }
 
 Vector Element::resistingForceSensitivity(int, const SensitivityParameter& p) {
-  // Without history, an element theta does not reach answers zero.
-  if (hasConstantTangent() && p.id == 0 && p.node < 0) return Vector::Zero(numDOF());
-  noSensitivity(p.node >= 0 ? "a coordinate of its node " + std::to_string(nodeTags()[p.node]) + " is a parameter"
-                            : "its response depends on the parameter or on its own history");
+  if (hasHistory() || p.id != 0)
+    noSensitivity(p.id != 0 ? "its response depends on the parameter" : "it has a history (path-dependent state)");
+  // Without history, an element theta does not reach answers zero, and one
+  // whose node moves is differentiated by central differences in the
+  // coordinate (step 1e-6 of the element's size).
+  if (p.node < 0) return Vector::Zero(numDOF());
+  double size = 0.0;
+  for (const Node* a : nodes())
+    for (const Node* b : nodes()) size = std::max(size, (a->crd() - b->crd()).norm());
+  Node& node = *nodes()[p.node];
+  const double x = node.crd()[p.dim], h = 1e-6 * (size > 0.0 ? size : 1.0);
+  auto forceAt = [&](double value) {
+    node.setCoordinate(p.dim, value);
+    rereadGeometry();
+    update();
+    return Vector(resistingForce());
+  };
+  const Vector plus = forceAt(x + h), minus = forceAt(x - h);
+  forceAt(x);
+  return (plus - minus) / (2.0 * h);
 }
 
 void Element::commitSensitivity(int, const SensitivityParameter& p, const Vector&, int) {
-  if (hasConstantTangent() && p.id == 0 && p.node < 0) return;
+  // No history, nothing to keep (resistingForceSensitivity refused the others).
+  if (!hasHistory() && p.id == 0) return;
   noSensitivity("it keeps no sensitivity of its history");
 }
 

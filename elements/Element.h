@@ -109,13 +109,17 @@ class Element {
     int id = 0;
     int node = -1, dim = -1;
   };
+  // Whether the element's response depends on its path (committed state);
+  // one without history takes part in sensitivities without keeping any.
+  virtual bool hasHistory() const { return !hasConstantTangent(); }
   // The id (> 0) of the element argument named by `args` (as setParameter
   // reads them), 0 if the element has none of that name.
   virtual int sensitivityParameter(const std::vector<std::string>& args);
   // d R / d theta at the nodes' trial displacements: the element's own
   // dependence on theta and that of its history (committed sensitivities of
-  // gradient `gradient`). The default serves elements without history that
-  // theta does not reach (linear elastic ones); others throw.
+  // gradient `gradient`). The default serves elements without history:
+  // zero when theta does not reach them, central differences in a node's
+  // coordinate; others throw.
   virtual Vector resistingForceSensitivity(int gradient, const SensitivityParameter& p);
   // After the nodes' displacement sensitivities of `gradient` are known
   // (dU, in element dof order): keeps the history's sensitivities of the

@@ -37,7 +37,14 @@ class ElasticSection2d : public SectionForceDeformation2d {
   void print(std::ostream& os) const override;
   const Properties& properties() const { return properties_; }
 
+  // 'E', 'A', 'Iz' (or 'I'), and with shear 'G', 'alphaY'; no history.
+  bool setParameter(const std::vector<std::string>& args, double value) override;
+  int sensitivityParameter(const std::vector<std::string>& args) override;
+  Vector forceSensitivity(int gradient, int parameterId) override;
+  void commitSensitivity(const Vector&, int, int, int) override {}
+
  private:
+  Matrix stiffnessOf(const Properties& p) const;
   Properties properties_;
   std::vector<SectionCode> codes_;
   Matrix stiffness_;

@@ -579,3 +579,61 @@ def test_ele_dynamical_force_balances_the_load(model):
         inertia_y = m * L / 420 * (156 * ay - 22 * L * arz)
         assert f[4] == pytest.approx(model.eleForce(1, 5) + inertia_y, rel=1e-10)
     assert model.eleDynamicalForce(1, 5) == [pytest.approx(f[4])]
+
+
+def test_recorder_tags_go_on_after_wipe(tmp_path):
+    # OpenSees numbers recorders on across wipe() (OpenSeesPy 3.7.1: 0, 1, wipe, 2).
+    import beamsolid.opensees as ops
+
+    ops.wipe()
+    ops.model("basic", "-ndm", 1, "-ndf", 1)
+    ops.node(1, 0.0)
+    first = ops.recorder("Node", "-file", str(tmp_path / "a.out"), "-node", 1, "-dof", 1, "disp")
+    second = ops.recorder("Node", "-file", str(tmp_path / "b.out"), "-node", 1, "-dof", 1, "disp")
+    ops.wipe()
+    ops.model("basic", "-ndm", 1, "-ndf", 1)
+    ops.node(1, 0.0)
+    third = ops.recorder("Node", "-file", str(tmp_path / "c.out"), "-node", 1, "-dof", 1, "disp")
+    assert (second - first, third - second) == (1, 1)
+    ops.wipe()
+
+
+def test_recorders_take_regions(tmp_path):
+    # recorder(..., '-region', regTag): a region of elements records those elements and their
+    # nodes, one of nodes those nodes (OpenSeesPy 3.7.1 writes the same columns). Three unit bars in
+    # series pulled by 1: nodes 2, 3, 4 move 0.01, 0.02, 0.03 per step, every bar carries 1.
+    import beamsolid.opensees as ops
+
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 2)
+    for i in range(1, 5):
+        ops.node(i, float(i), 0.0)
+    ops.fix(1, 1, 1)
+    for i in range(2, 5):
+        ops.fix(i, 0, 1)
+    ops.uniaxialMaterial("Elastic", 1, 100.0)
+    for i in range(1, 4):
+        ops.element("Truss", i, i, i + 1, 1.0, 1)
+    ops.region(1, "-ele", 2, 3)
+    ops.region(2, "-node", 2, 4)
+    ops.region(3, "-eleOnly", 1)
+    files = {k: str(tmp_path / f"{k}.out") for k in ("e1", "n1", "n2", "e3")}
+    ops.recorder("Element", "-file", files["e1"], "-region", 1, "axialForce")
+    ops.recorder("Node", "-file", files["n1"], "-time", "-region", 1, "-dof", 1, "disp")
+    ops.recorder("Node", "-file", files["n2"], "-region", 2, "-dof", 1, "disp")
+    ops.recorder("Element", "-file", files["e3"], "-region", 3, "axialForce")
+    with pytest.raises(beamsolid.OpenSeesError, match="region 3 holds no nodes"):
+        ops.recorder("Node", "-file", str(tmp_path / "x.out"), "-region", 3, "-dof", 1, "disp")
+    with pytest.raises(beamsolid.OpenSeesError, match="recorder Element.*region 9 does not exist"):
+        ops.recorder("Element", "-file", str(tmp_path / "x.out"), "-region", 9, "axialForce")
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(4, 1.0, 0.0)
+    ops.analysis("Static")
+    assert ops.analyze(2) == 0
+    ops.wipe()
+    rows = {k: np.loadtxt(f, ndmin=2) for k, f in files.items()}
+    np.testing.assert_allclose(rows["e1"], [[1, 1], [2, 2]], rtol=1e-12)
+    np.testing.assert_allclose(rows["n1"], [[1, 0.01, 0.02, 0.03], [2, 0.02, 0.04, 0.06]], rtol=1e-12)
+    np.testing.assert_allclose(rows["n2"], [[0.01, 0.03], [0.02, 0.06]], rtol=1e-12)
+    np.testing.assert_allclose(rows["e3"], [[1], [2]], rtol=1e-12)

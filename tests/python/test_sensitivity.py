@@ -188,6 +188,94 @@ def _elastic_beam_model():
     ops.load(2, 0.0, 1.0, 0.0)
 
 
+def test_elastic_section_closed_forms():
+    # dispBeamColumn with an Elastic section: the tip's deflection P L^3/(3 E Iz) and stretch
+    # N L/(E A) under a tip load (N, P).
+    E, A, Iz, P, N, L = 200e6, 0.01, 1e-4, 30.0, 500.0, 3.0
+    _elastic_beam_model()
+    ops.section("Elastic", 1, E, A, Iz)
+    ops.beamIntegration("Legendre", 1, 1, 3)
+    ops.element("dispBeamColumn", 1, 1, 2, 1, 1)
+    ops.load(2, N, P - 1.0, 0.0)  # the model's own load is (0, 1)
+    _parameters(("E", "A", "Iz"), 1)
+    _static(1)
+    assert ops.analyze(1) == 0
+    v, u = P * L**3 / (3 * E * Iz), N * L / (E * A)
+    assert ops.nodeDisp(2, 2) == pytest.approx(v, rel=1e-12)
+    assert ops.sensNodeDisp(2, 2, 1) == pytest.approx(-v / E, rel=1e-10)
+    assert ops.sensNodeDisp(2, 1, 1) == pytest.approx(-u / E, rel=1e-10)
+    assert ops.sensNodeDisp(2, 1, 2) == pytest.approx(-u / A, rel=1e-10)
+    assert abs(ops.sensNodeDisp(2, 2, 2)) < 1e-12 * v / A
+    assert ops.sensNodeDisp(2, 2, 3) == pytest.approx(-v / Iz, rel=1e-10)
+    assert ops.sensNodeDisp(2, 2, 4) == pytest.approx(3 * v / L, rel=1e-8)
+    assert ops.sensNodeDisp(2, 1, 4) == pytest.approx(u / L, rel=1e-8)
+
+
+def test_elastic_elements_node_coordinates():
+    # Elements without history take a node's coordinate by differences of their forces: an elastic
+    # cantilever's tip deflection P L^3 / (3 E I) and an elastic bar's stretch P L / (E A).
+    E, A, I, P, L = 200e6, 0.01, 1e-4, 30.0, 3.0
+    _elastic_beam_model()
+    ops.element("elasticBeamColumn", 1, 1, 2, A, E, I, 1)
+    ops.parameter(1, "node", 2, "coord", 1)
+    ops.parameter(2, "node", 2, "coord", 2)
+    _static(1)
+    assert ops.analyze(1) == 0
+    assert ops.sensNodeDisp(2, 2, 1) == pytest.approx(P / 30.0 * L**2 / (E * I), rel=1e-8)
+    # Moving the tip up turns the beam: the load gains an axial part, the deflection changes at
+    # second order only, the axial displacement by -v/L (the chord's rotation) to first order.
+    v = P / 30.0 * L**3 / (3 * E * I)
+    assert ops.sensNodeDisp(2, 1, 2) == pytest.approx(-v / L + (P / 30.0) / (E * A), rel=1e-6)
+
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 2)
+    ops.node(1, 0.0, 0.0)
+    ops.node(2, L, 0.0)
+    ops.fix(1, 1, 1)
+    ops.fix(2, 0, 1)
+    ops.uniaxialMaterial("Elastic", 1, E)
+    ops.element("Truss", 1, 1, 2, A, 1)
+    ops.parameter(1, "node", 2, "coord", 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, P, 0.0)
+    _static(1)
+    assert ops.analyze(1) == 0
+    assert ops.sensNodeDisp(2, 1, 1) == pytest.approx(P / (E * A), rel=1e-8)
+
+
+def _corotational_elastic_tip(L, sens=True):
+    """Two corotational elastic beams, the tip at x = L under a lateral load that bends it far."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    ops.node(1, 0.0, 0.0)
+    ops.node(3, 1.5, 0.0)
+    ops.node(2, L, 0.0)
+    ops.fix(1, 1, 1, 1)
+    ops.geomTransf("Corotational", 1)
+    ops.element("elasticBeamColumn", 1, 1, 3, 0.01, 200e6, 1e-4, 1)
+    ops.element("elasticBeamColumn", 2, 3, 2, 0.01, 200e6, 1e-4, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 0.0, 2000.0, 0.0)
+    if sens:
+        ops.parameter(1, "node", 2, "coord", 1)
+    _static(20)
+    assert ops.analyze(20) == 0
+    return ops.nodeDisp(2, 2), ops.sensNodeDisp(2, 2, 1) if sens else None
+
+
+def test_corotational_elastic_beam_node_coordinate_matches_central_differences():
+    # A large deflection (about 0.5 L): the elastic beams have no history with the corotational
+    # transformation either, so they differentiate their geometry by differences of their forces.
+    L, h = 3.0, 3e-5
+    tip, sens = _corotational_elastic_tip(L)
+    assert tip > 0.25 * L
+    plus, _ = _corotational_elastic_tip(L + h, False)
+    minus, _ = _corotational_elastic_tip(L - h, False)
+    assert sens == pytest.approx((plus - minus) / (2 * h), rel=1e-7)
+
+
 def test_unsupported_objects_fail_the_step_with_the_reason():
     # A material without sensitivities (Steel01) in a dispBeamColumn: its history's sensitivity to
     # the length is needed.
@@ -201,13 +289,15 @@ def test_unsupported_objects_fail_the_step_with_the_reason():
     assert "Steel01" in beamsolid.last_error() and "sensitivit" in beamsolid.last_error()
     assert ops.getTime() == 0.0  # the step was not kept
 
-    # A node coordinate of an element that cannot differentiate its geometry.
+    # An element with a history that keeps no sensitivities (forceBeamColumn).
     _elastic_beam_model()
-    ops.element("elasticBeamColumn", 1, 1, 2, 0.01, 200e6, 1e-4, 1)
+    ops.section("Elastic", 1, 200e6, 0.01, 1e-4)
+    ops.beamIntegration("Lobatto", 1, 1, 3)
+    ops.element("forceBeamColumn", 1, 1, 2, 1, 1)
     ops.parameter(1, "node", 2, "coord", 1)
     _static(1)
     assert ops.analyze(1) < 0
-    assert "elasticBeamColumn" in beamsolid.last_error() and "node 2" in beamsolid.last_error()
+    assert "forceBeamColumn" in beamsolid.last_error() and "history" in beamsolid.last_error()
 
     # A name the element's sections do not have.
     n = _wf_cantilever(lambda: ops.uniaxialMaterial("Elastic", 1, 200e6))
