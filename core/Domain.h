@@ -145,7 +145,7 @@ class Domain {
   // Whether any element or node may be damped by Rayleigh factors, global or
   // of a region (so that the all-zero case costs nothing).
   bool anyRayleigh() const { return rayleigh_.any() || regionRayleigh_; }
-  void noteRegionRayleigh() { regionRayleigh_ = true; }
+  void noteRegionRayleigh();
   // Eigenvalues of the last eigen analysis (the mode shapes are on the nodes).
   const std::vector<double>& eigenvalues() const { return eigenvalues_; }
   void setEigenvalues(std::vector<double> values) { eigenvalues_ = std::move(values); }
@@ -214,6 +214,10 @@ class Domain {
   int nextMPTag_ = 0;
   RayleighFactors rayleigh_;
   bool regionRayleigh_ = false;
+  // Whether any state was committed (the betaKcomm stiffness then is the
+  // tangent of that state, not the initial one).
+  bool committedOnce_ = false;
+  void keepCommittedStiffnesses();
   std::set<int> regionTags_;
   std::vector<double> eigenvalues_;
   std::unique_ptr<ModalDamping> modalDamping_;
