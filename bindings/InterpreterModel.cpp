@@ -446,8 +446,7 @@ Result Interpreter::imposedMotion(CommandArgs& a) {
     a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(n.ndf()));
   auto* pattern = dynamic_cast<MultipleSupportPattern*>(domain_->findPattern(currentPatternTag_));
   if (!pattern) a.fail("no MultipleSupport pattern: call pattern('MultipleSupport', tag) first");
-  for (const auto& s : domain_->sps())
-    if (s.nodeTag == nodeTag && s.dof == dof - 1) a.fail("dof " + std::to_string(dof) + " is already fixed");
+  // A fixed dof may take an imposed motion (it then governs, see DofMap).
   for (const auto& [ptag, p] : domain_->patterns())
     for (const auto& s : p->sps())
       if (s.nodeTag == nodeTag && s.dof == dof - 1)
@@ -486,7 +485,7 @@ Result Interpreter::sp(CommandArgs& a) {
   const Node& n = domain_->node(tag, a.context());
   if (dof < 1 || dof > n.ndf())
     a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(n.ndf()));
-  if (domain_->isFixed(tag, dof - 1)) a.fail("dof " + std::to_string(dof) + " is already fixed");
+  // A fixed dof may take an sp (it then governs, see DofMap).
   for (const auto& [ptag, p] : domain_->patterns())
     if (p->hasSP(tag, dof - 1))
       a.fail("dof " + std::to_string(dof) + " already has an sp in pattern " + std::to_string(ptag));

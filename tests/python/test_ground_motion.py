@@ -128,8 +128,36 @@ def test_ground_motion_errors(ops):
     ops.groundMotion(3, "Plain", "-disp", 1)
     with pytest.raises(beamsolid.OpenSeesError, match="imposedMotion 2.*ground motion 4 does not exist"):
         ops.imposedMotion(2, 1, 4)
-    with pytest.raises(beamsolid.OpenSeesError, match="imposedMotion 1.*already fixed"):
-        ops.imposedMotion(1, 1, 3)
+    ops.imposedMotion(1, 1, 3)  # on a fixed dof: allowed, as OpenSees (see the test below)
+    ops.pattern("MultipleSupport", 2)
+    ops.groundMotion(5, "Plain", "-disp", 1)
+    with pytest.raises(beamsolid.OpenSeesError, match="imposedMotion 1.*already has an imposed value in pattern 1"):
+        ops.imposedMotion(1, 1, 5)
+
+
+@pytest.mark.parametrize("handler, share", [(("Transformation",), 1.0), (("Penalty", 1e12, 1e12), 0.5)])
+def test_imposed_motion_on_a_fixed_support(ops, handler, share):
+    """Multiple-support scripts fix the supports, then impose their motion
+    (OpenSeesPyDoc Example 4): as OpenSees, the imposed displacement governs
+    under Transformation; under Penalty the fix and the motion are two equal
+    springs, so the support moves half the ground displacement (OpenSeesPy
+    3.7.1 does the same)."""
+    _sdof(ops)
+    values = [0.0, 0.001, 0.003, 0.006, 0.008, 0.009]
+    ops.timeSeries("Path", 1, "-dt", 0.01, "-values", *values, 0.0)
+    ops.pattern("MultipleSupport", 1)
+    ops.groundMotion(1, "Plain", "-disp", 1, "-fact", 2.0)
+    ops.imposedMotion(1, 1, 1)
+    ops.constraints(*handler)
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Newton")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.analysis("Transient")
+    for v in values[1:]:
+        assert ops.analyze(1, 0.01) == 0
+        assert ops.nodeDisp(1, 1) == pytest.approx(share * 2.0 * v, rel=1e-9)
 
 
 @pytest.mark.parametrize("spec, formula", [
