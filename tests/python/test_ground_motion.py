@@ -283,3 +283,41 @@ def test_shipped_record_loads_as_a_path_series(ops):
     for i in range(1, 200):
         assert ops.analyze(1) == 0
         assert ops.nodeUnbalance(2)[0] == pytest.approx(-2.0 * 9.81 * acc[i], rel=1e-9, abs=1e-12)
+
+
+def test_integrated_motion_at_the_record_end(ops):
+    """An acceleration-only ground motion a = c t on N = 1000 samples (dt =
+    0.01, the integration step): the trapezoids give v = c t^2 / 2 exactly and
+    d = their running sum up to the last sample t_e = (N-1) dt, which counts
+    although a '-dt' path is 0 at its last time; one step more, where the
+    record is 0: v = v(t_e) + dt c t_e / 2, d = d(t_e) + dt (v(t_e) + v) / 2;
+    then 0 (the integral ends). OpenSeesPy 3.7.1 gives these numbers on this
+    record (149.70015, 498.50174925; 149.85, 499.9995); before, BeamSolid
+    dropped the last sample and ended at t_e."""
+    _sdof(ops)
+    n, h, c = 1000, 0.01, 3.0
+    ops.timeSeries("Path", 1, "-dt", h, "-values", *[c * k * h for k in range(n)])
+    ops.pattern("MultipleSupport", 1)
+    ops.groundMotion(1, "Plain", "-accel", 1)
+    ops.imposedMotion(1, 1, 1)
+    ops.constraints("Transformation")
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Linear")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.analysis("Transient")
+    v = [c * (k * h) ** 2 / 2 for k in range(n)]
+    d = [0.0]
+    for k in range(1, n):
+        d.append(d[-1] + h * (v[k - 1] + v[k]) / 2)
+    te = (n - 1) * h
+    assert ops.analyze(n - 1, h) == 0
+    assert ops.nodeVel(1, 1) == pytest.approx(v[-1], rel=1e-9)
+    assert ops.nodeDisp(1, 1) == pytest.approx(d[-1], rel=1e-9)
+    assert ops.analyze(1, h) == 0
+    v_end = v[-1] + h * c * te / 2
+    assert ops.nodeVel(1, 1) == pytest.approx(v_end, rel=1e-9)
+    assert ops.nodeDisp(1, 1) == pytest.approx(d[-1] + h * (v[-1] + v_end) / 2, rel=1e-9)
+    assert ops.analyze(1, h) == 0
+    assert ops.nodeDisp(1, 1) == 0.0 and ops.nodeVel(1, 1) == 0.0
