@@ -25,11 +25,15 @@ std::unique_ptr<PathSeries> GroundMotion::integrate(const TimeSeries& f, double 
     throw OpenSeesError(context + ": cannot integrate time series " + std::to_string(f.tag()) + " (" +
                         f.className() + "): it has no finite duration; give the velocity/displacement series too");
   const double h = kIntegrationStep;
-  // One step past the last sample (where the series is 0), as OpenSees: its
-  // velocity at the record's end takes the last acceleration sample, and the
-  // velocity and displacement reach that extra step (checked with OpenSeesPy
-  // 3.7.1 on a 1000-point record). The displacement keeps the velocity's grid.
-  if (points == 0) points = static_cast<std::size_t>(std::floor(*end / h + 0.5)) + 2;
+  // Up to the series' end, and for a '-dt' path one step past its last
+  // sample (where it is 0), as OpenSees: there the velocity at the record's
+  // last sample takes that sample, and the velocity and displacement reach
+  // the extra step (checked with OpenSeesPy 3.7.1 on a 1000-point record; a
+  // '-time' path ends at its last time). The displacement keeps the
+  // velocity's grid.
+  const auto* path = dynamic_cast<const PathSeries*>(&f);
+  const std::size_t extra = path && path->isUniform() ? 2 : 1;
+  if (points == 0) points = static_cast<std::size_t>(std::floor(*end / h + 0.5)) + extra;
   const std::size_t n = points;
   // A '-dt' path is 0 at its last time itself; the integral takes the sample there.
   const double lastSample = std::nextafter(*end, 0.0);
