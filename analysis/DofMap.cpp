@@ -76,17 +76,30 @@ void DofMap::build(const Domain& domain, const ConstraintHandler& handler, const
   enum Kind : char { Free, Imposed, Dependent };
   std::vector<char> kind(nFull, Free);
   imposedFull_.clear();
+  const bool eliminate = handler.eliminates();
+  // imposedValues lists the fixes first, then the patterns' sp/imposedMotion.
+  const std::size_t numFixes = domain.sps().size();
   for (const auto& iv : domain.imposedValues(domain.currentTime())) {
     const int f = fullOf(iv.nodeTag, iv.dof);
-    if (std::find(imposedFull_.begin(), imposedFull_.end(), f) != imposedFull_.end())
-      throw OpenSeesError("analysis: " + nameOf(f) + " has more than one single-point constraint (fix/sp)");
+    auto earlier = std::find(imposedFull_.begin(), imposedFull_.end(), f);
+    if (earlier != imposedFull_.end()) {
+      // A pattern's sp or imposedMotion on a fixed dof (multiple-support
+      // excitation scripts fix the supports, then impose their motion): as
+      // OpenSees, with Transformation/Plain the imposed value governs, with
+      // Penalty both constraints act (two springs: the mean of 0 and the value).
+      const bool fixThenPattern = static_cast<std::size_t>(earlier - imposedFull_.begin()) < numFixes &&
+                                  imposedFull_.size() >= numFixes;
+      if (!fixThenPattern)
+        throw OpenSeesError("analysis: " + nameOf(f) + " has more than one single-point constraint (fix/sp)");
+      if (eliminate) *earlier = -1;
+    }
     imposedFull_.push_back(f);
   }
   std::unordered_map<int, std::vector<std::pair<int, double>>> sources;
-  const bool eliminate = handler.eliminates();
   if (eliminate) {
     std::vector<std::string> overridden;
-    for (int f : imposedFull_) kind[f] = Imposed;
+    for (int f : imposedFull_)
+      if (f >= 0) kind[f] = Imposed;
     for (const auto& mp : domain.mps()) {
       for (std::size_t i = 0; i < mp.constrainedDofs.size(); ++i) {
         const int f = fullOf(mp.constrainedNode, mp.constrainedDofs[i]);

@@ -449,8 +449,7 @@ Result Interpreter::imposedMotion(CommandArgs& a) {
     a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(n.ndf()));
   auto* pattern = dynamic_cast<MultipleSupportPattern*>(domain_->findPattern(currentPatternTag_));
   if (!pattern) a.fail("no MultipleSupport pattern: call pattern('MultipleSupport', tag) first");
-  for (const auto& s : domain_->sps())
-    if (s.nodeTag == nodeTag && s.dof == dof - 1) a.fail("dof " + std::to_string(dof) + " is already fixed");
+  // A fixed dof may take an imposed motion (it then governs, see DofMap).
   for (const auto& [ptag, p] : domain_->patterns())
     for (const auto& s : p->sps())
       if (s.nodeTag == nodeTag && s.dof == dof - 1)
@@ -489,7 +488,7 @@ Result Interpreter::sp(CommandArgs& a) {
   const Node& n = domain_->node(tag, a.context());
   if (dof < 1 || dof > n.ndf())
     a.fail("dof " + std::to_string(dof) + " is out of range 1.." + std::to_string(n.ndf()));
-  if (domain_->isFixed(tag, dof - 1)) a.fail("dof " + std::to_string(dof) + " is already fixed");
+  // A fixed dof may take an sp (it then governs, see DofMap).
   for (const auto& [ptag, p] : domain_->patterns())
     if (p->hasSP(tag, dof - 1))
       a.fail("dof " + std::to_string(dof) + " already has an sp in pattern " + std::to_string(ptag));
@@ -519,9 +518,22 @@ Result Interpreter::eleLoad(CommandArgs& a) {
       const bool planar = domain_->spaceDim() == 2;
       if (planar && (type == "-beamUniform" || type == "beamUniform")) {
         load.type = ElementLoad::Type::BeamUniform;
-        const auto w = a.nextDoubles("Wy, <Wx>", 1);
-        if (w.size() > 2) a.fail("-beamUniform takes Wy and optionally Wx in a 2D model");
-        load.values = {w[0], 0.0, w.size() > 1 ? w[1] : 0.0};
+        // OpenSees 3.7 also reads (Wya, Wxa, aOverL, bOverL, Wyb, Wxb): a load
+        // over aL..bL varying linearly from Wya, Wxa to Wyb, Wxb (Wyb, Wxb
+        // default to Wya, Wxa with four values; Wxb to 0 once Wyb is given).
+        // Only its full-span uniform case is built here.
+        const auto w = a.nextDoubles("Wy, <Wx>, <aOverL, bOverL, Wyb, Wxb>", 1);
+        if (w.size() > 6) a.fail("-beamUniform takes at most Wy, Wx, aOverL, bOverL, Wyb, Wxb in a 2D model");
+        const double wy = w[0], wx = w.size() > 1 ? w[1] : 0.0;
+        const double aL = w.size() > 2 ? w[2] : 0.0, bL = w.size() > 3 ? w[3] : 1.0;
+        const double wyb = w.size() > 4 ? w[4] : wy, wxb = w.size() > 5 ? w[5] : (w.size() > 4 ? 0.0 : wx);
+        if (aL < 0.0 || aL > 1.0 || bL < 0.0 || bL > 1.0 || aL >= bL)
+          a.fail("-beamUniform aOverL and bOverL must satisfy 0 <= aOverL < bOverL <= 1, got " + std::to_string(aL) +
+                 ", " + std::to_string(bL));
+        if (aL != 0.0 || bL != 1.0 || wyb != wy || wxb != wx)
+          a.fail("-beamUniform over part of the element (aOverL, bOverL) or varying (Wyb, Wxb) is not supported; "
+                 "only a uniform load over the whole element");
+        load.values = {wy, 0.0, wx};
       } else if (planar && (type == "-beamPoint" || type == "beamPoint")) {
         load.type = ElementLoad::Type::BeamPoint;
         const auto w = a.nextDoubles("Py, xL, <Px>", 2);

@@ -301,6 +301,21 @@ void Domain::setRayleigh(const RayleighFactors& f) {
   regionRayleigh_ = false;
   for (auto& [tag, n] : nodes_) n->clearRegionAlphaM();
   for (auto& [tag, e] : elements_) e->clearRegionRayleigh();
+  keepCommittedStiffnesses();
+}
+
+void Domain::noteRegionRayleigh() {
+  regionRayleigh_ = true;
+  keepCommittedStiffnesses();
+}
+
+// Factors given after an analysis damp with betaKcomm times the tangent of
+// the last converged state from the next step on (OpenSees does so; checked
+// with a yielded truss: same response as betaK on the committed tangent).
+void Domain::keepCommittedStiffnesses() {
+  if (!committedOnce_ || !anyRayleigh()) return;
+  for (auto& [tag, e] : elements_)
+    if (e->rayleighFactors(rayleigh_).betaKcomm != 0.0) e->keepCommittedStiffness();
 }
 
 void Domain::applyLoad(double time) {
@@ -318,9 +333,8 @@ void Domain::commit() {
   for (auto& [tag, n] : nodes_) n->commitState();
   for (auto& [tag, e] : elements_) e->commitState();
   // betaKcomm damps with the stiffness of the last converged state.
-  if (anyRayleigh())
-    for (auto& [tag, e] : elements_)
-      if (e->rayleighFactors(rayleigh_).betaKcomm != 0.0) e->keepCommittedStiffness();
+  committedOnce_ = true;
+  keepCommittedStiffnesses();
   committedTime_ = currentTime_;
   record();
 }

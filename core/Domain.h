@@ -147,7 +147,7 @@ class Domain {
   // Whether any element or node may be damped by Rayleigh factors, global or
   // of a region (so that the all-zero case costs nothing).
   bool anyRayleigh() const { return rayleigh_.any() || regionRayleigh_; }
-  void noteRegionRayleigh() { regionRayleigh_ = true; }
+  void noteRegionRayleigh();
   // Eigenvalues of the last eigen analysis (the mode shapes are on the nodes).
   const std::vector<double>& eigenvalues() const { return eigenvalues_; }
   void setEigenvalues(std::vector<double> values) { eigenvalues_ = std::move(values); }
@@ -225,6 +225,10 @@ class Domain {
   RayleighFactors rayleigh_;
   bool regionRayleigh_ = false;
   std::map<int, Region> regions_;
+  // Whether any state was committed (the betaKcomm stiffness then is the
+  // tangent of that state, not the initial one).
+  bool committedOnce_ = false;
+  void keepCommittedStiffnesses();
   std::vector<double> eigenvalues_;
   std::unique_ptr<ModalDamping> modalDamping_;
   double currentTime_ = 0.0;

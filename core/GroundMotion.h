@@ -10,9 +10,9 @@ namespace beamsolid {
 // groundMotion('Plain'): ground acceleration, velocity and displacement in
 // time, each fact times its series. A missing velocity (displacement) is the
 // trapezoidal integral of the acceleration (velocity) from t = 0, sampled
-// every kIntegrationStep up to the series' last time, as OpenSees does
-// (its default step 0.01, checked with OpenSeesPy); the integral is a
-// uniform path, so it is 0 from that last time on. A missing acceleration
+// every kIntegrationStep up to the series' last time (a '-dt' path: one
+// step past it), as OpenSees does (its default step 0.01, checked with
+// OpenSeesPy); the integral is a uniform path, so it is 0 from its end on. A missing acceleration
 // is 0: like OpenSees, nothing is differentiated.
 class GroundMotion {
  public:
@@ -29,8 +29,10 @@ class GroundMotion {
   double disp(double time) const;
 
  private:
-  // Trapezoidal running integral of f (times fact) on 0, h, 2h, ... up to its last time.
-  static std::unique_ptr<PathSeries> integrate(const TimeSeries& f, double fact, const std::string& context);
+  // Trapezoidal running integral of f (times fact) on 0, h, 2h, ... up to its last time (a '-dt' path: one step past).
+  // `points` (0: from f's last time) is the grid size, set on return.
+  static std::unique_ptr<PathSeries> integrate(const TimeSeries& f, double fact, const std::string& context,
+                                               std::size_t& points);
 
   int tag_;
   std::shared_ptr<TimeSeries> accel_, vel_, disp_;

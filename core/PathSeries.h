@@ -30,6 +30,8 @@ class PathSeries : public TimeSeries {
   const std::vector<double>& values() const { return values_; }
   double startTime() const { return times_.front(); }
   double endTime() const { return times_.back(); }
+  // Whether the times are uniform (-dt): the path then ends just before its last point.
+  bool isUniform() const { return uniform_; }
 
   // Whitespace- (or comma-) separated numbers of a file; errors name the
   // file and the offending token.

@@ -128,8 +128,36 @@ def test_ground_motion_errors(ops):
     ops.groundMotion(3, "Plain", "-disp", 1)
     with pytest.raises(beamsolid.OpenSeesError, match="imposedMotion 2.*ground motion 4 does not exist"):
         ops.imposedMotion(2, 1, 4)
-    with pytest.raises(beamsolid.OpenSeesError, match="imposedMotion 1.*already fixed"):
-        ops.imposedMotion(1, 1, 3)
+    ops.imposedMotion(1, 1, 3)  # on a fixed dof: allowed, as OpenSees (see the test below)
+    ops.pattern("MultipleSupport", 2)
+    ops.groundMotion(5, "Plain", "-disp", 1)
+    with pytest.raises(beamsolid.OpenSeesError, match="imposedMotion 1.*already has an imposed value in pattern 1"):
+        ops.imposedMotion(1, 1, 5)
+
+
+@pytest.mark.parametrize("handler, share", [(("Transformation",), 1.0), (("Penalty", 1e12, 1e12), 0.5)])
+def test_imposed_motion_on_a_fixed_support(ops, handler, share):
+    """Multiple-support scripts fix the supports, then impose their motion
+    (OpenSeesPyDoc Example 4): as OpenSees, the imposed displacement governs
+    under Transformation; under Penalty the fix and the motion are two equal
+    springs, so the support moves half the ground displacement (OpenSeesPy
+    3.7.1 does the same)."""
+    _sdof(ops)
+    values = [0.0, 0.001, 0.003, 0.006, 0.008, 0.009]
+    ops.timeSeries("Path", 1, "-dt", 0.01, "-values", *values, 0.0)
+    ops.pattern("MultipleSupport", 1)
+    ops.groundMotion(1, "Plain", "-disp", 1, "-fact", 2.0)
+    ops.imposedMotion(1, 1, 1)
+    ops.constraints(*handler)
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Newton")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.analysis("Transient")
+    for v in values[1:]:
+        assert ops.analyze(1, 0.01) == 0
+        assert ops.nodeDisp(1, 1) == pytest.approx(share * 2.0 * v, rel=1e-9)
 
 
 @pytest.mark.parametrize("spec, formula", [
@@ -255,3 +283,65 @@ def test_shipped_record_loads_as_a_path_series(ops):
     for i in range(1, 200):
         assert ops.analyze(1) == 0
         assert ops.nodeUnbalance(2)[0] == pytest.approx(-2.0 * 9.81 * acc[i], rel=1e-9, abs=1e-12)
+
+
+def test_integrated_motion_at_the_record_end(ops):
+    """An acceleration-only ground motion a = c t on N = 1000 samples (dt =
+    0.01, the integration step): the trapezoids give v = c t^2 / 2 exactly and
+    d = their running sum up to the last sample t_e = (N-1) dt, which counts
+    although a '-dt' path is 0 at its last time; one step more, where the
+    record is 0: v = v(t_e) + dt c t_e / 2, d = d(t_e) + dt (v(t_e) + v) / 2;
+    then 0 (the integral ends). OpenSeesPy 3.7.1 gives these numbers on this
+    record (149.70015, 498.50174925; 149.85, 499.9995); before, BeamSolid
+    dropped the last sample and ended at t_e."""
+    _sdof(ops)
+    n, h, c = 1000, 0.01, 3.0
+    ops.timeSeries("Path", 1, "-dt", h, "-values", *[c * k * h for k in range(n)])
+    ops.pattern("MultipleSupport", 1)
+    ops.groundMotion(1, "Plain", "-accel", 1)
+    ops.imposedMotion(1, 1, 1)
+    ops.constraints("Transformation")
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Linear")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.analysis("Transient")
+    v = [c * (k * h) ** 2 / 2 for k in range(n)]
+    d = [0.0]
+    for k in range(1, n):
+        d.append(d[-1] + h * (v[k - 1] + v[k]) / 2)
+    te = (n - 1) * h
+    assert ops.analyze(n - 1, h) == 0
+    assert ops.nodeVel(1, 1) == pytest.approx(v[-1], rel=1e-9)
+    assert ops.nodeDisp(1, 1) == pytest.approx(d[-1], rel=1e-9)
+    assert ops.analyze(1, h) == 0
+    v_end = v[-1] + h * c * te / 2
+    assert ops.nodeVel(1, 1) == pytest.approx(v_end, rel=1e-9)
+    assert ops.nodeDisp(1, 1) == pytest.approx(d[-1] + h * (v[-1] + v_end) / 2, rel=1e-9)
+    assert ops.analyze(1, h) == 0
+    assert ops.nodeDisp(1, 1) == 0.0 and ops.nodeVel(1, 1) == 0.0
+
+
+def test_integrated_motion_of_an_explicit_time_path_ends_at_its_last_time(ops):
+    """A '-time' path a = 6 t on [0, 4] (values 0, 12, fact 2): v = 3 t^2 and
+    d = t^3 + 6 h^2 t / 12 (the trapezoids' error for a quadratic) at t = 4,
+    and 0 one step later (no extra step, unlike a '-dt' path; OpenSeesPy 3.7.1:
+    48 and 64.0002, then 0)."""
+    _sdof(ops)
+    ops.timeSeries("Path", 1, "-time", 0.0, 4.0, "-values", 0.0, 12.0)
+    ops.pattern("MultipleSupport", 1)
+    ops.groundMotion(1, "Plain", "-accel", 1, "-fact", 2.0)
+    ops.imposedMotion(1, 1, 1)
+    ops.constraints("Transformation")
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Linear")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.analysis("Transient")
+    assert ops.analyze(400, 0.01) == 0
+    assert ops.nodeVel(1, 1) == pytest.approx(48.0, rel=1e-9)
+    assert ops.nodeDisp(1, 1) == pytest.approx(64.0 + 6 * 0.01**2 * 4 / 12, rel=1e-9)
+    assert ops.analyze(1, 0.01) == 0
+    assert ops.nodeDisp(1, 1) == 0.0 and ops.nodeVel(1, 1) == 0.0

@@ -50,13 +50,13 @@ def test_fixz_serves_mixed_ndf_nodes(ops):
     ops.printModel("-JSON", "-file", "/dev/null")
     ops.timeSeries("Constant", 1)
     ops.pattern("Plain", 1, 1)
-    # node 2 fixed by fixZ, node 3 not: an sp on node 2 collides with the fix.
+    # node 2 fixed by fixZ, node 3 not: a second fix on node 2 collides.
     try:
-        ops.sp(2, 1, 0.1)
-        raise AssertionError("sp on a fixed dof must raise")
+        ops.fix(2, 1, 0, 0)
+        raise AssertionError("fix on a fixed dof must raise")
     except ops.OpenSeesError as err:
         assert "already fixed" in str(err)
-    ops.sp(3, 1, 0.1)
+    ops.fix(3, 1, 0, 0)
 
 
 def test_printmodel_json_is_valid(ops, tmp_path):

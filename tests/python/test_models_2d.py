@@ -288,6 +288,33 @@ def test_2d_cantilever_uniform_load(model):
     assert_close(model.nodeReaction(1), [0.0, w * L, w * L**2 / 2], 1e-12)
 
 
+@pytest.mark.parametrize("extra", [(0.0,), (0.0, 0.0), (0.0, 0.0, 1.0), (0.0, 0.0, 1.0, -6.0, 0.0)])
+def test_2d_uniform_load_in_the_partial_form_over_the_whole_span(model, extra):
+    """OpenSees 3.7 reads -beamUniform Wya, Wxa, aOverL, bOverL, Wyb, Wxb in 2D
+    (OpenSeesPyDoc's Example 4 writes (-W, 0.0, 0.0)); the whole-span uniform
+    case gives the cantilever's w L^4 / 8EI."""
+    L, w = 4.0, 6.0
+    cantilever(model, 1, L)
+    model.eleLoad("-ele", 1, "-type", "-beamUniform", -w, *extra)
+    static(model)
+    assert_close(-model.nodeDisp(2, 2), w * L**4 / (8 * E_BEAM * I_BEAM), 1e-12)
+
+
+@pytest.mark.parametrize("values, message", [
+    ((-6.0, 0.0, 0.3), "over part of the element"),
+    ((-6.0, 0.0, 0.0, 0.5), "over part of the element"),
+    ((-6.0, 0.0, 0.0, 1.0, -3.0), "varying"),
+    ((-6.0, 1.0, 0.0, 1.0, -6.0), "varying"),  # Wxb defaults to 0 once Wyb is given
+    ((-6.0, 0.0, 0.5, 0.2), "aOverL and bOverL"),
+    ((-6.0, 0.0, -0.1), "aOverL and bOverL"),
+    ((-6.0, 0.0, 0.0, 1.0, -6.0, 0.0, 1.0), "at most"),
+])
+def test_2d_partial_or_varying_uniform_load_raises(model, values, message):
+    cantilever(model, 1, 4.0)
+    with pytest.raises(beamsolid.OpenSeesError, match="eleLoad.*" + message):
+        model.eleLoad("-ele", 1, "-type", "-beamUniform", *values)
+
+
 def test_2d_point_load_and_axial_uniform_load_on_a_cantilever(model):
     """-beamPoint Py at xL on one element: deflection at the tip P a^2 (3L - a) / 6EI;
     -beamUniform (0, wx): tip stretch wx L^2 / 2EA."""

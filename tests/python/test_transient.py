@@ -16,7 +16,10 @@ a Path series sampled at the analysis steps, so P(t_n) is exact. Checked:
   (Hilber, Hughes, Taylor 1977, with OpenSees' alpha = 1 + alpha_HHT);
 - TRBDF2: the resonance response converges at second order;
 - -doRayleigh 0 leaves a zeroLength undamped by betaK, alphaM still damps nodal mass;
-- a failed step leaves u, v, a and time exactly at the last converged state.
+- a failed step leaves u, v, a and time exactly at the last converged state;
+- betaKcomm given after a static push past yield damps the first dynamic
+  step with the yielded tangent (Linear step: du = dP / (kt (1 + betaKcomm
+  gamma / (beta dt)) + m / (beta dt^2))).
 """
 import math
 
@@ -269,3 +272,49 @@ def test_eigen_before_and_after_gravity_with_pdelta(solver):
     assert after == pytest.approx((3 * E * I / L**3 - P / L) / m, rel=1e-10)
     assert after < before
     model.wipe()
+
+
+@pytest.mark.parametrize("factors, damped_k", [((0.0, 0.0, 0.0, 0.004), "tangent"),
+                                               ((0.0, 0.0, 0.004, 0.0), "initial")])
+def test_committed_stiffness_damping_given_after_a_static_push(model, factors, damped_k):
+    """A Steel01 truss yielded statically, then rayleigh(); one Linear step of
+    a load dP: betaKcomm uses the yielded (committed) tangent at once, not the
+    initial stiffness (before, BeamSolid used k0 until the next commit)."""
+    E, fy, b, A, L, m, dt, dP = 2.0e5, 250.0, 0.05, 1.0e-3, 2.0, 1.0e-3, 0.005, 20.0
+    model.model("basic", "-ndm", 1, "-ndf", 1)
+    model.node(1, 0.0)
+    model.node(2, L)
+    model.fix(1, 1)
+    model.mass(2, m)
+    model.uniaxialMaterial("Steel01", 1, fy, E, b)
+    model.element("Truss", 1, 1, 2, A, 1, "-doRayleigh", 1)
+    model.timeSeries("Linear", 1)
+    model.pattern("Plain", 1, 1)
+    model.load(2, 1.0)
+    model.constraints("Plain")
+    model.numberer("Plain")
+    model.system("FullGeneral")
+    model.test("NormDispIncr", 1e-12, 20)
+    model.algorithm("Newton")
+    model.integrator("DisplacementControl", 2, 1, 1.0e-3)
+    model.analysis("Static")
+    assert model.analyze(6) == 0
+    u0 = model.nodeDisp(2, 1)
+    model.loadConst("-time", 0.0)
+    model.rayleigh(*factors)
+    model.wipeAnalysis()
+    model.timeSeries("Constant", 2)
+    model.pattern("Plain", 2, 2)
+    model.load(2, dP)
+    model.constraints("Plain")
+    model.numberer("Plain")
+    model.system("FullGeneral")
+    model.algorithm("Linear")
+    model.integrator("Newmark", 0.5, 0.25)
+    model.analysis("Transient")
+    assert model.analyze(1, dt) == 0
+    k0, kt = E * A / L, b * E * A / L
+    beta_d = 0.004
+    kd = kt if damped_k == "tangent" else k0
+    expected = dP / (kt + beta_d * kd * 0.5 / (0.25 * dt) + m / (0.25 * dt * dt))
+    assert model.nodeDisp(2, 1) - u0 == pytest.approx(expected, rel=1e-12)

@@ -71,4 +71,5 @@ SCRIPTS = (
     "tet_mesh",
     "two_node_link",
     "imk_peak_frame_2d",
+    "committed_stiffness_damping",
 )
