@@ -17,6 +17,7 @@ Steel01::Steel01(int tag, double fy, double E0, double b, double a1, double a2, 
 std::unique_ptr<UniaxialMaterial> Steel01::clone() const { return std::make_unique<Steel01>(*this); }
 
 void Steel01::revertToStart() {
+  sensitivity_.clear();
   committed_ = State{};
   committed_.tangent = E0_;
   trial_ = committed_;
@@ -34,8 +35,11 @@ void Steel01::setTrialStrain(double strain, double) {
   // A change below machine epsilon is no change (as OpenSees, found by running it): the
   // committed state, strain and tangent stay, so round-off in a fiber's strain cannot pick a
   // branch, nor can such changes add up.
+  trial_.unchanged = true;
   if (std::fabs(step) < std::numeric_limits<double>::epsilon()) return;
+  trial_.unchanged = false;
   trial_.strain = strain;
+  trial_.branch = 0;
 
   // Elastic predictor from the committed state, clipped to the yield lines.
   const double hardening = b_ * E0_;
@@ -46,9 +50,11 @@ void Steel01::setTrialStrain(double strain, double) {
   if (trial_.stress > upper) {
     trial_.stress = upper;
     trial_.tangent = hardening;
+    trial_.branch = 1;
   } else if (trial_.stress < lower) {
     trial_.stress = lower;
     trial_.tangent = hardening;
+    trial_.branch = -1;
   }
 
   // A reversal ends an excursion: its extreme strain is the committed one,
@@ -66,6 +72,81 @@ void Steel01::setTrialStrain(double strain, double) {
     }
     trial_.direction = -1;
   }
+}
+
+int Steel01::sensitivityParameter(const std::vector<std::string>& args) {
+  if (args.empty()) return 0;
+  const std::string& n = args[0];
+  if (n == "Fy" || n == "fy") return 1;
+  if (n == "E0" || n == "E") return 2;
+  if (n == "b") return 3;
+  if (n == "a1") return 4;
+  if (n == "a2") return 5;
+  if (n == "a3") return 6;
+  if (n == "a4") return 7;
+  return 0;
+}
+
+bool Steel01::setParameter(const std::vector<std::string>& args, double value) {
+  double* targets[] = {&fy_, &E0_, &b_, &a1_, &a2_, &a3_, &a4_};
+  const int id = sensitivityParameter(args);
+  if (id == 0) return false;
+  *targets[id - 1] = value;
+  return true;
+}
+
+double Steel01::growthSensitivity(int aId, int aStrainId, double a, double aStrain, double range, double dRange,
+                                  int parameterId) const {
+  if (range <= 0.0) return 0.0;
+  // growth = a X^0.8 with X = range E0 / (2 aStrain Fy).
+  const double x = range * E0_ / (2.0 * aStrain * fy_);
+  const double dLogX = dRange / range + (parameterId == 2 ? 1.0 / E0_ : 0.0) -
+                       (parameterId == aStrainId ? 1.0 / aStrain : 0.0) - (parameterId == 1 ? 1.0 / fy_ : 0.0);
+  const double power = std::pow(x, 0.8);
+  return (parameterId == aId ? power : 0.0) + a * 0.8 * power * dLogX;
+}
+
+// setTrialStrain differentiated with its branches (elastic or on a yield
+// line, reversal or not) held.
+Steel01::Sensitivity Steel01::trialSensitivity(double dStrain, int gradient, int parameterId) const {
+  const Sensitivity dc = gradient < static_cast<int>(sensitivity_.size()) ? sensitivity_[gradient] : Sensitivity{};
+  if (trial_.unchanged) return dc;
+  const State& c = committed_;
+  const double dFy = parameterId == 1 ? 1.0 : 0.0, dE0 = parameterId == 2 ? 1.0 : 0.0;
+  const double db = parameterId == 3 ? 1.0 : 0.0;
+  Sensitivity d = dc;
+  d.strain = dStrain;
+  const double strain = trial_.strain;
+  if (trial_.branch == 0) {
+    d.stress = dc.stress + dE0 * (strain - c.strain) + E0_ * (dStrain - dc.strain);
+  } else {
+    const double sign = trial_.branch;
+    const double g = sign > 0 ? c.tensionGrowth : c.compressionGrowth;
+    const double dg = sign > 0 ? dc.tensionGrowth : dc.compressionGrowth;
+    d.stress = (db * E0_ + b_ * dE0) * strain + b_ * E0_ * dStrain +
+               sign * ((1.0 - b_) * dFy * (1.0 + g) - db * fy_ * (1.0 + g) + (1.0 - b_) * fy_ * dg);
+  }
+  // The reversal's extreme strain and the growth it sets for the next steps.
+  if (trial_.strain > c.strain && c.direction < 0) {
+    d.minStrain = c.minStrain <= c.strain ? dc.minStrain : dc.strain;
+    d.tensionGrowth = growthSensitivity(6, 7, a3_, a4_, c.maxStrain - trial_.minStrain, dc.maxStrain - d.minStrain,
+                                        parameterId);
+  } else if (trial_.strain < c.strain && c.direction > 0) {
+    d.maxStrain = c.maxStrain >= c.strain ? dc.maxStrain : dc.strain;
+    d.compressionGrowth = growthSensitivity(4, 5, a1_, a2_, trial_.maxStrain - c.minStrain, d.maxStrain - dc.minStrain,
+                                            parameterId);
+  }
+  return d;
+}
+
+double Steel01::stressSensitivity(int gradient, int parameterId) {
+  return trialSensitivity(0.0, gradient, parameterId).stress;
+}
+
+void Steel01::commitSensitivity(double strainSensitivity, int gradient, int parameterId, int numGradients) {
+  const Sensitivity d = trialSensitivity(strainSensitivity, gradient, parameterId);
+  if (static_cast<int>(sensitivity_.size()) < numGradients) sensitivity_.resize(numGradients);
+  sensitivity_.at(gradient) = d;
 }
 
 void Steel01::print(std::ostream& os) const {

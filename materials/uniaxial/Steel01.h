@@ -1,4 +1,6 @@
 #pragma once
+#include <vector>
+
 #include "materials/uniaxial/UniaxialMaterial.h"
 
 namespace beamsolid {
@@ -38,6 +40,13 @@ class Steel01 : public UniaxialMaterial {
   double tensionGrowth() const { return trial_.tensionGrowth; }
   double compressionGrowth() const { return trial_.compressionGrowth; }
 
+  // Sensitivities (sensitivityAlgorithm) to 'Fy' (or 'fy'), 'E0' (or 'E'),
+  // 'b', 'a1'...'a4': the branch the trial took held, the rest differentiated.
+  bool setParameter(const std::vector<std::string>& args, double value) override;
+  int sensitivityParameter(const std::vector<std::string>& args) override;
+  double stressSensitivity(int gradient, int parameterId) override;
+  void commitSensitivity(double strainSensitivity, int gradient, int parameterId, int numGradients) override;
+
   void print(std::ostream& os) const override;
 
  private:
@@ -46,8 +55,20 @@ class Steel01 : public UniaxialMaterial {
     double maxStrain = 0.0, minStrain = 0.0;
     double tensionGrowth = 0.0, compressionGrowth = 0.0;
     int direction = 0;  // sign of the last strain increment, 0 before any
+    int branch = 0;     // the trial's stress: 0 elastic, +1 upper line, -1 lower line
+    bool unchanged = true;  // the trial kept the committed state (step below epsilon)
   };
   double growth(double a, double aStrain, double strainRange) const;
+  // d/d theta of the committed stress, strain, extreme strains and growths.
+  struct Sensitivity {
+    double stress = 0.0, strain = 0.0, maxStrain = 0.0, minStrain = 0.0;
+    double tensionGrowth = 0.0, compressionGrowth = 0.0;
+  };
+  Sensitivity trialSensitivity(double dStrain, int gradient, int parameterId) const;
+  // d growth(a, aStrain, range) for the parameters' and range's changes.
+  double growthSensitivity(int aId, int aStrainId, double a, double aStrain, double range, double dRange,
+                           int parameterId) const;
+  std::vector<Sensitivity> sensitivity_;  // one per gradient
 
   double fy_, E0_, b_, a1_, a2_, a3_, a4_;
   State trial_, committed_;

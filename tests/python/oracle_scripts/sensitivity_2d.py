@@ -4,7 +4,8 @@ WFSection2d of Hardening steel under a tip load that yields it, load control, an
 displacement's sensitivity to the steel's E, Fy and H_kin (all elements), the section depth d and
 the tip node's x coordinate (the length), at every step; with the Linear and the Corotational
 transformations (the corotational one to a tip rotation of about 0.15 rad) and a Trig load that
-loads, unloads and reverses. Then the same with an Elastic material and E only.
+loads, unloads and reverses; with Steel01 (E, Fy, b) to a 0.4 rad tip; then with an Elastic
+material and E only.
 """
 
 STEPS = 500
@@ -20,6 +21,8 @@ def _cantilever(ops, transf, mat, P):
     E, Fy, b = 200e6, 410e3, 0.02
     if mat == "Hardening":
         ops.uniaxialMaterial("Hardening", 1, E, Fy, 0.0, b / (1 - b) * E)
+    elif mat == "Steel01":
+        ops.uniaxialMaterial("Steel01", 1, Fy, E, b)
     else:
         ops.uniaxialMaterial("Elastic", 1, E)
     ops.section("WFSection2d", 1, 1, 0.5, 0.1, 0.1, 0.0, 20, 0)
@@ -32,7 +35,7 @@ def _cantilever(ops, transf, mat, P):
         ops.element("dispBeamColumn", i + 1, nodes[i], nodes[i + 1], 1, 1)
     ops.timeSeries("Trig", 1, 0.0, 1.0, 1.0)
     ops.pattern("Plain", 1, 1)
-    names = ("E", "Fy", "Hkin", "d") if mat == "Hardening" else ("E", "d")
+    names = {"Hardening": ("E", "Fy", "Hkin", "d"), "Steel01": ("E", "Fy", "b", "d")}.get(mat, ("E", "d"))
     for k, name in enumerate(names, start=1):
         ops.parameter(k)
         for e in range(1, n + 1):
@@ -53,6 +56,7 @@ def _cantilever(ops, transf, mat, P):
 def run(ops):
     out = {}
     for key, transf, mat, P in (("linear", "Linear", "Hardening", 1000.0), ("corot", "Corotational", "Hardening", 700.0),
+                                ("steel01", "Corotational", "Steel01", 1000.0),
                                 ("elastic", "Corotational", "Elastic", 3000.0)):
         names = _cantilever(ops, transf, mat, P)
         tags = ops.getParamTags()
