@@ -76,45 +76,14 @@ TEST(HardeningMaterial, InputErrorsNameTheArgument) {
 // step d stress / d theta (strain held, history's sensitivity carried) against central
 // differences of the whole path run with theta +- h, for E, sigmaY, H_iso and H_kin.
 TEST(HardeningMaterial, StressSensitivityMatchesFiniteDifferencesOfThePath) {
-  const double values[4] = {200.0, 2.0, 10.0, 5.0};
-  const char* names[4] = {"E", "sigmaY", "H_iso", "H_kin"};
   std::vector<double> path;
   for (int i = 1; i <= 40; ++i) path.push_back(0.03 * std::sin(0.2 * i) + 0.001 * i);
-  auto stresses = [&](const double* v) {
+  auto make = [](const std::vector<double>& v) {
     Domain d;
-    auto m = build(d, "Hardening", args("uniaxialMaterial", 1, v[0], v[1], v[2], v[3]));
-    std::vector<double> out;
-    for (double e : path) {
-      m->setTrialStrain(e);
-      out.push_back(m->stress());
-      m->commitState();
-    }
-    return out;
+    return build(d, "Hardening", args("uniaxialMaterial", 1, v[0], v[1], v[2], v[3]));
   };
-  for (int p = 0; p < 4; ++p) {
-    Domain d;
-    auto m = build(d, "Hardening", args("uniaxialMaterial", 1, values[0], values[1], values[2], values[3]));
-    const int id = m->sensitivityParameter({names[p]});
-    ASSERT_GT(id, 0) << names[p];
-    std::vector<double> ddm;
-    for (double e : path) {
-      m->setTrialStrain(e);
-      ddm.push_back(m->stressSensitivity(0, id));
-      m->commitSensitivity(0.0, 0, id, 1);  // the strain path does not depend on theta
-      m->commitState();
-    }
-    double plus[4], minus[4];
-    for (int k = 0; k < 4; ++k) plus[k] = minus[k] = values[k];
-    const double h = 1e-6 * values[p];
-    plus[p] += h;
-    minus[p] -= h;
-    const std::vector<double> sp = stresses(plus), sm = stresses(minus);
-    double scale = 0.0;
-    for (double x : ddm) scale = std::max(scale, std::fabs(x));
-    ASSERT_GT(scale, 0.0) << names[p];
-    for (std::size_t i = 0; i < path.size(); ++i)
-      EXPECT_NEAR(ddm[i], (sp[i] - sm[i]) / (2.0 * h), 1e-7 * scale) << names[p] << " step " << i;
-  }
+  expectSensitivitiesMatchFiniteDifferences(make, {200.0, 2.0, 10.0, 5.0}, {"E", "sigmaY", "H_iso", "H_kin"}, path,
+                                            1e-7);
   // A strain sensitivity alone moves the stress by the tangent on a plastic step.
   Domain d;
   auto m = build(d, "Hardening", args("uniaxialMaterial", 1, 200.0, 2.0, 10.0, 5.0));

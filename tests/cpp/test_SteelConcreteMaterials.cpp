@@ -621,45 +621,12 @@ TEST(SteelConcreteMaterials, BadParametersNameCommandAndArgument) {
 // hardening (reversals grow the yield lines): at every step d stress / d theta against central
 // differences of the whole path run with theta +- h, for Fy, E0, b and a1..a4.
 TEST(Steel01, StressSensitivityMatchesFiniteDifferencesOfThePath) {
-  const double values[7] = {2.0, 200.0, 0.05, 0.4, 1.5, 0.3, 2.0};
-  const char* names[7] = {"Fy", "E0", "b", "a1", "a2", "a3", "a4"};
   std::vector<double> path;
   for (int i = 1; i <= 60; ++i) path.push_back(0.04 * std::sin(0.25 * i) * (1.0 + 0.02 * i) + 0.0005 * i);
-  auto make = [&](const double* v) {
+  auto make = [](const std::vector<double>& v) {
     Domain d;
     return build(d, "Steel01", args("uniaxialMaterial", 1, v[0], v[1], v[2], v[3], v[4], v[5], v[6]));
   };
-  auto stresses = [&](const double* v) {
-    auto m = make(v);
-    std::vector<double> out;
-    for (double e : path) {
-      m->setTrialStrain(e);
-      out.push_back(m->stress());
-      m->commitState();
-    }
-    return out;
-  };
-  for (int p = 0; p < 7; ++p) {
-    auto m = make(values);
-    const int id = m->sensitivityParameter({names[p]});
-    ASSERT_GT(id, 0) << names[p];
-    std::vector<double> ddm;
-    for (double e : path) {
-      m->setTrialStrain(e);
-      ddm.push_back(m->stressSensitivity(0, id));
-      m->commitSensitivity(0.0, 0, id, 1);
-      m->commitState();
-    }
-    double plus[7], minus[7];
-    for (int k = 0; k < 7; ++k) plus[k] = minus[k] = values[k];
-    const double h = 1e-6 * values[p];
-    plus[p] += h;
-    minus[p] -= h;
-    const std::vector<double> sp = stresses(plus), sm = stresses(minus);
-    double scale = 0.0;
-    for (double x : ddm) scale = std::max(scale, std::fabs(x));
-    ASSERT_GT(scale, 0.0) << names[p];
-    for (std::size_t i = 0; i < path.size(); ++i)
-      EXPECT_NEAR(ddm[i], (sp[i] - sm[i]) / (2.0 * h), 1e-6 * scale) << names[p] << " step " << i;
-  }
+  beamsolid::uniaxialtest::expectSensitivitiesMatchFiniteDifferences(
+      make, {2.0, 200.0, 0.05, 0.4, 1.5, 0.3, 2.0}, {"Fy", "E0", "b", "a1", "a2", "a3", "a4"}, path, 1e-6);
 }
