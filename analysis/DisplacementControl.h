@@ -28,6 +28,10 @@ class DisplacementControl : public PathFollowingIntegrator {
   void revert(AnalysisModel& model) override;
 
   double increment() const { return increment_; }
+  bool controlledDof(std::vector<DofMap::Term>& terms) const override {
+    terms = control_;
+    return true;
+  }
 
  private:
   // The controlled dof as a combination of equations (checks node and dof).

@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "analysis/AnalysisModel.h"
 #include "core/Types.h"
@@ -22,6 +23,10 @@ class Integrator {
   virtual void formUnbalance(AnalysisModel& model) { model.formUnbalance(); }
   // Applies the solution dU of the last solve; negative on failure.
   virtual int update(AnalysisModel& model, const Vector& dU) = 0;
+  // Sensitivities: an integrator that holds a dof at a given value (displacement
+  // control) gives it as a combination of equations, so that d lambda / d theta
+  // keeps it there; false for those that prescribe lambda (load control).
+  virtual bool controlledDof(std::vector<DofMap::Term>&) const { return false; }
   // After a converged step (iterations it took) and after a failed one.
   virtual void commit(AnalysisModel&, int /*iterations*/) {}
   virtual void revert(AnalysisModel&) {}

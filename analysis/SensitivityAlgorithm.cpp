@@ -59,11 +59,14 @@ Bindings bind(const ParameterMap& parameters, const std::vector<Element*>& eleme
 void SensitivityAlgorithm::compute(AnalysisModel& model, Integrator& integrator) {
   results_.clear();
   if (parameters_.empty()) return;
-  // Under load control the load factor does not depend on theta; other
-  // integrators add d lambda / d theta (not built).
-  if (integrator.name() != "LoadControl")
-    throw OpenSeesError(std::string(kContext) + ": sensitivities are computed under integrator('LoadControl', ...) "
-                        "in a static analysis; " + integrator.name() + " is not supported");
+  // Load control prescribes lambda; displacement control a dof, and lambda
+  // follows. Other integrators (arc length, transient) are not built.
+  std::vector<DofMap::Term> control;
+  const bool controlled = integrator.controlledDof(control);
+  if (integrator.name() != "LoadControl" && !controlled)
+    throw OpenSeesError(std::string(kContext) + ": sensitivities are computed in static analyses under "
+                        "integrator('LoadControl', ...) or ('DisplacementControl', ...); " + integrator.name() +
+                        " is not supported");
   const DofMap& map = model.dofMap();
   const std::vector<Element*>& elements = map.elements();
   const Bindings bound = bind(parameters_, elements);
@@ -78,7 +81,22 @@ void SensitivityAlgorithm::compute(AnalysisModel& model, Integrator& integrator)
                         model.describeFactorFailure());
 
   const int numEquations = model.numEquations();
-  Vector rhs(numEquations), x(numEquations);
+  Vector rhs(numEquations), x(numEquations), reference;
+  double eReference = 0.0;
+  auto controlledValue = [&](const Vector& v) {
+    double c = 0.0;
+    for (const auto& t : control) c += t.coefficient * v[t.equation];
+    return c;
+  };
+  if (controlled) {
+    Vector load;
+    model.formReferenceLoad(load);
+    model.system().solve(load, reference);
+    eReference = controlledValue(reference);
+    if (eReference == 0.0)
+      throw OpenSeesError(std::string(kContext) + ": the reference load does not move the controlled dof");
+  }
+  results_.lambda.assign(numGradients, 0.0);
   for (int k = 0; k < numGradients; ++k) {
     rhs.setZero();
     for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
@@ -88,6 +106,10 @@ void SensitivityAlgorithm::compute(AnalysisModel& model, Integrator& integrator)
           rhs[t->equation] -= t->coefficient * dR[i];
     }
     model.system().solve(rhs, x);
+    if (controlled) {
+      results_.lambda[k] = -controlledValue(x) / eReference;
+      x += results_.lambda[k] * reference;
+    }
     for (int f = 0; f < map.numFullDofs(); ++f) {
       double du = 0.0;
       for (auto* t = map.fullTermsBegin(f); t != map.fullTermsEnd(f); ++t) du += t->coefficient * x[t->equation];

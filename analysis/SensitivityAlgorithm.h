@@ -17,6 +17,9 @@ class Integrator;
 // history's sensitivities of the last step included; then each element
 // keeps the sensitivities of its new history. Both options compute at
 // every step: a path-dependent history's sensitivity needs every step.
+// Under displacement control lambda depends on theta too: with
+// a = K_T^-1 P_ref and b = -K_T^-1 dR/dtheta|u, du/dtheta = b + dlambda a
+// and dlambda = -(e.b)/(e.a) keeps the controlled dof e.u where it is.
 class SensitivityAlgorithm {
  public:
   SensitivityAlgorithm(const ParameterMap& parameters, SensitivityResults& results)

@@ -11,10 +11,12 @@ namespace beamsolid {
 struct SensitivityResults {
   std::vector<int> parameterTags;
   std::unordered_map<int, Matrix> nodeDisp;  // node tag -> ndf x parameters
+  std::vector<double> lambda;                 // d lambda / d theta (the Domain's time), per parameter
 
   void clear() {
     parameterTags.clear();
     nodeDisp.clear();
+    lambda.clear();
   }
   // Column of parameter `tag`, -1 if it has none.
   int gradientOf(int tag) const {

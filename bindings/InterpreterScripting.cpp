@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "bindings/Interpreter.h"
+#include "core/LoadPattern.h"
 #include "core/OpenSeesClassName.h"
 #include "core/OpenSeesError.h"
 #include "elements/Element.h"
@@ -410,16 +411,20 @@ Result Interpreter::sensNodeDisp(CommandArgs& a) {
   return it->second(dof - 1, k);
 }
 
-// sensLambda(patternTag, paramTag): d lambda / d theta; 0 under load control,
-// the only integrator sensitivities are computed with.
+// sensLambda(patternTag, paramTag): d lambda / d theta of the pattern's load
+// factor at the last converged step: 0 under load control; under
+// displacement control the time's sensitivity times the pattern's slope.
 Result Interpreter::sensLambda(CommandArgs& a) {
   const int patternTag = a.nextInt("patternTag");
   a.setContext("sensLambda " + std::to_string(patternTag));
   const int paramTag = a.nextInt("paramTag");
   a.expectEnd();
-  if (!domain_->findPattern(patternTag)) a.fail("load pattern " + std::to_string(patternTag) + " does not exist");
+  const LoadPattern* pattern = domain_->findPattern(patternTag);
+  if (!pattern) a.fail("load pattern " + std::to_string(patternTag) + " does not exist");
   if (parameters_.find(paramTag) == parameters_.end()) a.fail("parameter " + std::to_string(paramTag) + " does not exist");
-  return 0.0;
+  const int k = sensitivityResults_.gradientOf(paramTag);
+  if (k < 0 || k >= static_cast<int>(sensitivityResults_.lambda.size())) return 0.0;
+  return sensitivityResults_.lambda[k] * pattern->factorSlope(domain_->currentTime());
 }
 
 // setElementRayleighDampingFactors(eleTag, alphaM, betaK, betaK0, betaKc):

@@ -157,6 +157,56 @@ def test_corotational_plastic_matches_central_differences():
         assert sens[k] == pytest.approx((plus - minus) / (2 * h), rel=5e-8), name
 
 
+def _displacement_controlled_bar(E=200e6, Fy=400e3, H=4e6, sens=True):
+    """The hardening bar of test_hardening_bar_closed_forms pulled by displacement control to
+    u = 3 Fy L / E (into the plastic range) in 10 steps; returns the load factor (the bar's force)
+    and, with sens, its and the tip's sensitivities to E, Fy, Hkin."""
+    L, A = 2.0, 0.01
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    ops.node(1, 0.0, 0.0)
+    ops.node(2, L, 0.0)
+    ops.fix(1, 1, 1, 1)
+    ops.fix(2, 0, 1, 1)
+    ops.uniaxialMaterial("Hardening", 1, E, Fy, 0.0, H)
+    ops.section("Fiber", 1)
+    ops.fiber(0.05, 0.0, A / 2, 1)
+    ops.fiber(-0.05, 0.0, A / 2, 1)
+    ops.geomTransf("Linear", 1)
+    ops.beamIntegration("Legendre", 1, 1, 2)
+    ops.element("dispBeamColumn", 1, 1, 2, 1, 1)
+    if sens:
+        _parameters(("E", "Fy", "Hkin"), 1, coordinate=False)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 1.0, 0.0, 0.0)
+    _static(10)
+    ops.integrator("DisplacementControl", 2, 1, 3 * 400e3 * L / 200e6 / 10)
+    ops.analysis("Static")
+    assert ops.analyze(10) == 0
+    if not sens:
+        return ops.getTime(), None
+    return ops.getTime(), [(ops.sensLambda(1, k), ops.sensNodeDisp(2, 1, k)) for k in (1, 2, 3)]
+
+
+def test_displacement_control_load_factor_sensitivity():
+    # The force at a fixed stretch: lambda = A (Fy + Et (eps - Fy/E)), Et = E H/(E + H), so
+    # d lambda/d Fy = A (1 - Et/E) = A E/(E + H) (closed form); E and H against central
+    # differences of whole analyses. The controlled dof does not move with theta.
+    E, Fy, H, A = 200e6, 400e3, 4e6, 0.01
+    lam, sens = _displacement_controlled_bar()
+    eps = 3 * Fy / E
+    Et = E * H / (E + H)
+    assert lam == pytest.approx(A * (Fy + Et * (eps - Fy / E)), rel=1e-10)
+    assert sens[1][0] == pytest.approx(A * E / (E + H), rel=1e-9)
+    for k, (name, value) in enumerate((("E", E), ("Fy", Fy), ("H", H))):
+        h = 1e-5 * value
+        plus, _ = _displacement_controlled_bar(**{name: value + h}, sens=False)
+        minus, _ = _displacement_controlled_bar(**{name: value - h}, sens=False)
+        assert sens[k][0] == pytest.approx((plus - minus) / (2 * h), rel=1e-7), name
+        assert abs(sens[k][1]) < 1e-14
+
+
 def test_update_parameter_reaches_fibers_and_geometry():
     # updateParameter on a dispBeamColumn's section: E of the fibers' material, the depth d.
     P = 30.0
@@ -309,17 +359,17 @@ def test_unsupported_objects_fail_the_step_with_the_reason():
     assert ops.analyze(1) < 0
     assert "notAParameter" in beamsolid.last_error()
 
-    # Only load control: displacement control would need d lambda / d theta.
+    # Arc length (d lambda / d theta with the arc's constraint) is not built.
     n = _wf_cantilever(lambda: ops.uniaxialMaterial("Elastic", 1, 200e6))
     _parameters(("E",), n, coordinate=False)
     ops.timeSeries("Linear", 1)
     ops.pattern("Plain", 1, 1)
     ops.load(2, 0.0, 1.0, 0.0)
     _static(1)
-    ops.integrator("DisplacementControl", 2, 2, 0.001)
+    ops.integrator("ArcLength", 0.001, 1.0)
     ops.analysis("Static")
     assert ops.analyze(1) < 0
-    assert "DisplacementControl" in beamsolid.last_error()
+    assert "ArcLength" in beamsolid.last_error()
 
 
 def test_bad_arguments_raise():
