@@ -77,13 +77,9 @@ def test_elastic_cantilever_closed_forms():
     assert ops.sensLambda(1, 1) == 0.0
 
 
-@pytest.mark.parametrize("hardening", ["kinematic", "isotropic"])
-def test_hardening_bar_closed_forms(hardening):
-    # A bar of linear-hardening steel pulled past yield to sigma and back to zero (elastic
-    # unloading): u = L (sigma/E + (sigma - Fy)/H) at the peak and L (sigma - Fy)/H after; so
-    # du/dFy = -L/H both times, du/dE = -L sigma/E^2 then 0, du/dH = -L (sigma - Fy)/H^2.
-    E, Fy, H, L, A = 200e6, 400e3, 4e6, 2.0, 0.01
-    Hiso, Hkin = (0.0, H) if hardening == "kinematic" else (H, 0.0)
+def _hardening_bar(E, Fy, Hiso, Hkin, L, A):
+    """A bar along x of one dispBeamColumn: two fibers of linear-hardening steel (area A), only the
+    tip's axial dof free."""
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 3)
     ops.node(1, 0.0, 0.0)
@@ -97,6 +93,16 @@ def test_hardening_bar_closed_forms(hardening):
     ops.geomTransf("Linear", 1)
     ops.beamIntegration("Legendre", 1, 1, 2)
     ops.element("dispBeamColumn", 1, 1, 2, 1, 1)
+
+
+@pytest.mark.parametrize("hardening", ["kinematic", "isotropic"])
+def test_hardening_bar_closed_forms(hardening):
+    # A bar of linear-hardening steel pulled past yield to sigma and back to zero (elastic
+    # unloading): u = L (sigma/E + (sigma - Fy)/H) at the peak and L (sigma - Fy)/H after; so
+    # du/dFy = -L/H both times, du/dE = -L sigma/E^2 then 0, du/dH = -L (sigma - Fy)/H^2.
+    E, Fy, H, L, A = 200e6, 400e3, 4e6, 2.0, 0.01
+    Hiso, Hkin = (0.0, H) if hardening == "kinematic" else (H, 0.0)
+    _hardening_bar(E, Fy, Hiso, Hkin, L, A)
     hname = "Hkin" if hardening == "kinematic" else "Hiso"
     _parameters(("E", "Fy", hname), 1, coordinate=False)
     sigma = 1.5 * Fy
@@ -162,19 +168,7 @@ def _displacement_controlled_bar(E=200e6, Fy=400e3, H=4e6, sens=True):
     u = 3 Fy L / E (into the plastic range) in 10 steps; returns the load factor (the bar's force)
     and, with sens, its and the tip's sensitivities to E, Fy, Hkin."""
     L, A = 2.0, 0.01
-    ops.wipe()
-    ops.model("basic", "-ndm", 2, "-ndf", 3)
-    ops.node(1, 0.0, 0.0)
-    ops.node(2, L, 0.0)
-    ops.fix(1, 1, 1, 1)
-    ops.fix(2, 0, 1, 1)
-    ops.uniaxialMaterial("Hardening", 1, E, Fy, 0.0, H)
-    ops.section("Fiber", 1)
-    ops.fiber(0.05, 0.0, A / 2, 1)
-    ops.fiber(-0.05, 0.0, A / 2, 1)
-    ops.geomTransf("Linear", 1)
-    ops.beamIntegration("Legendre", 1, 1, 2)
-    ops.element("dispBeamColumn", 1, 1, 2, 1, 1)
+    _hardening_bar(E, Fy, 0.0, H, L, A)
     if sens:
         _parameters(("E", "Fy", "Hkin"), 1, coordinate=False)
     ops.timeSeries("Linear", 1)
@@ -326,6 +320,16 @@ def test_corotational_elastic_beam_node_coordinate_matches_central_differences()
     assert sens == pytest.approx((plus - minus) / (2 * h), rel=1e-7)
 
 
+def _loaded_elastic_cantilever(parameter):
+    """The elastic WF cantilever with a tip load, one parameter on its element, load control."""
+    n = _wf_cantilever(lambda: ops.uniaxialMaterial("Elastic", 1, 200e6))
+    _parameters((parameter,), n, coordinate=False)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(2, 0.0, 1.0, 0.0)
+    _static(1)
+
+
 def test_unsupported_objects_fail_the_step_with_the_reason():
     # A material without sensitivities (ElasticPP) in a dispBeamColumn: its history's sensitivity
     # to the length is needed.
@@ -350,22 +354,12 @@ def test_unsupported_objects_fail_the_step_with_the_reason():
     assert "forceBeamColumn" in beamsolid.last_error() and "history" in beamsolid.last_error()
 
     # A name the element's sections do not have.
-    n = _wf_cantilever(lambda: ops.uniaxialMaterial("Elastic", 1, 200e6))
-    _parameters(("notAParameter",), n, coordinate=False)
-    ops.timeSeries("Linear", 1)
-    ops.pattern("Plain", 1, 1)
-    ops.load(2, 0.0, 1.0, 0.0)
-    _static(1)
+    _loaded_elastic_cantilever("notAParameter")
     assert ops.analyze(1) < 0
     assert "notAParameter" in beamsolid.last_error()
 
     # Arc length (d lambda / d theta with the arc's constraint) is not built.
-    n = _wf_cantilever(lambda: ops.uniaxialMaterial("Elastic", 1, 200e6))
-    _parameters(("E",), n, coordinate=False)
-    ops.timeSeries("Linear", 1)
-    ops.pattern("Plain", 1, 1)
-    ops.load(2, 0.0, 1.0, 0.0)
-    _static(1)
+    _loaded_elastic_cantilever("E")
     ops.integrator("ArcLength", 0.001, 1.0)
     ops.analysis("Static")
     assert ops.analyze(1) < 0
