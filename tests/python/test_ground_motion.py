@@ -299,14 +299,7 @@ def test_integrated_motion_at_the_record_end(ops):
     ops.timeSeries("Path", 1, "-dt", h, "-values", *[c * k * h for k in range(n)])
     ops.pattern("MultipleSupport", 1)
     ops.groundMotion(1, "Plain", "-accel", 1)
-    ops.imposedMotion(1, 1, 1)
-    ops.constraints("Transformation")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 10)
-    ops.algorithm("Linear")
-    ops.integrator("Newmark", 0.5, 0.25)
-    ops.analysis("Transient")
+    _imposed_at_node_1(ops)
     v = [c * (k * h) ** 2 / 2 for k in range(n)]
     d = [0.0]
     for k in range(1, n):
@@ -323,6 +316,18 @@ def test_integrated_motion_at_the_record_end(ops):
     assert ops.nodeDisp(1, 1) == 0.0 and ops.nodeVel(1, 1) == 0.0
 
 
+def _imposed_at_node_1(ops):
+    """Ground motion 1 imposed on node 1, dof 1; a linear Newmark analysis."""
+    ops.imposedMotion(1, 1, 1)
+    ops.constraints("Transformation")
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Linear")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.analysis("Transient")
+
+
 def test_integrated_motion_of_an_explicit_time_path_ends_at_its_last_time(ops):
     """A '-time' path a = 6 t on [0, 4] (values 0, 12, fact 2): v = 3 t^2 and
     d = t^3 + 6 h^2 t / 12 (the trapezoids' error for a quadratic) at t = 4,
@@ -332,14 +337,7 @@ def test_integrated_motion_of_an_explicit_time_path_ends_at_its_last_time(ops):
     ops.timeSeries("Path", 1, "-time", 0.0, 4.0, "-values", 0.0, 12.0)
     ops.pattern("MultipleSupport", 1)
     ops.groundMotion(1, "Plain", "-accel", 1, "-fact", 2.0)
-    ops.imposedMotion(1, 1, 1)
-    ops.constraints("Transformation")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 10)
-    ops.algorithm("Linear")
-    ops.integrator("Newmark", 0.5, 0.25)
-    ops.analysis("Transient")
+    _imposed_at_node_1(ops)
     assert ops.analyze(400, 0.01) == 0
     assert ops.nodeVel(1, 1) == pytest.approx(48.0, rel=1e-9)
     assert ops.nodeDisp(1, 1) == pytest.approx(64.0 + 6 * 0.01**2 * 4 / 12, rel=1e-9)
