@@ -104,13 +104,33 @@ void ContactMaterial3D::setIterate(double gap, const Vector2& slip, double norma
     // A new iterate: the last call's outcome becomes the previous iterate.
     previousSliding_ = haveLast_ && lastSliding_;
     previousDirection_ = lastDirection_;
+    ++iterates_;
   }
   setTrialState(gap, slip, normalForce, metric);
   held_ = false;
-  // With no strength (mu t_n + c = 0: a smooth interface, or mu > 0 at t_n = 0) there is
-  // no stick band to overshoot and the return map's T = 0 with a zero tangent is exact; a
-  // previous iterate that slid with no traction has no direction to compare with. Holding
-  // such a node sticking made every other iterate stick, and Newton cycled.
+  if (iterates_ == 1 && committedSliding_ && !sliding_ && slipResistance_ > 0.0) {
+    // The step's first iterate of a node that slid at the last commit and has
+    // not moved since: its state is the converged one, on the slip surface up
+    // to the drift of the re-projection (the new projection's metric), and the
+    // return map may find it a hair inside and give the stick tangent. It is
+    // held on the surface with the sliding tangent (C15-C16, gamma = 0), the
+    // state it converged to: a steady slide then converges in one iteration
+    // instead of restarting each step from stick. Only the predictor changes;
+    // the next iterate is the return map's again.
+    const Vector2 mSlip = metric_ * elasticSlip_;
+    const double slipNorm = std::sqrt(std::max(elasticSlip_.dot(mSlip), 0.0));
+    const double moved = std::sqrt(std::max(slip.dot(metric_ * slip), 0.0));
+    if (slipNorm > 0.0 && moved <= kUnmoved * slipNorm) {
+      sliding_ = true;
+      const double scale = slipResistance_ / (G_ * slipNorm);
+      elasticSlip_ *= scale;
+      traction_ = scale * G_ * mSlip;
+      const Vector2 mr = mSlip / slipNorm;
+      tangentSlip_ = G_ * scale * (metric_ - mr * mr.transpose());
+      tangentNormal_ = mu_ * mr;
+      fillGeneric(gap, slip, normalForce);
+    }
+  }
   if (sliding_ && previousSliding_ && slipResistance_ > 0.0 && previousDirection_.squaredNorm() > 0.0) {
     // Plastic multiplier of the trial state along the previous traction
     // direction t (unit in m^-1): t . G s_e - (mu t_n + c) (C14 projected).
@@ -136,13 +156,14 @@ void ContactMaterial3D::setIterate(double gap, const Vector2& slip, double norma
 
 void ContactMaterial3D::forgetIterates() {
   held_ = haveLast_ = lastSliding_ = previousSliding_ = false;
+  iterates_ = 0;
   lastDirection_.setZero();
   previousDirection_.setZero();
 }
 
 void ContactMaterial3D::release() {
   forgetIterates();
-  sliding_ = false;
+  sliding_ = committedSliding_ = false;
   elasticSlip_.setZero();
   plasticSlip_.setZero();
   traction_.setZero();
@@ -170,6 +191,7 @@ void ContactMaterial3D::setTrialStrain(const Eigen::Ref<const Vector>& strain) {
 
 void ContactMaterial3D::commitState() {
   committedElasticSlip_ = elasticSlip_;
+  committedSliding_ = sliding_;
   forgetIterates();
 }
 

@@ -138,10 +138,15 @@ class ContactMaterial3D : public NDMaterial {
   bool sliding_ = false;
   // Committed state.
   Vector2 committedElasticSlip_ = Vector2::Zero();
+  bool committedSliding_ = false;
+  // An incremental slip below this fraction of the elastic slip is no motion
+  // (the round-off of the re-projection).
+  static constexpr double kUnmoved = 1e-9;
   // setIterate's memory: the input and outcome of the last call, and the
   // outcome of the iterate before it (sliding, unit traction direction).
   bool held_ = false;
   bool haveLast_ = false;
+  int iterates_ = 0;  // distinct inputs since the last commit or revert
   Vector2 lastSlip_ = Vector2::Zero();
   double lastNormalForce_ = 0.0;
   bool lastSliding_ = false, previousSliding_ = false;

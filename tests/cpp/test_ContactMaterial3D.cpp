@@ -430,6 +430,51 @@ TEST(ContactMaterial3D, IterateIsRepeatableAndForgetsAtCommitAndRevert) {
   }
 }
 
+// A node that slid at the last commit starts the next step on the slip surface with the sliding
+// tangent, also when the new projection's metric puts its elastic slip a hair inside the surface:
+// the tangent of the converged state. Only while it has not moved: any motion, or any later iterate,
+// gets the return map's answer (a reversal sticks).
+TEST(ContactMaterial3D, SlidingNodeStartsTheNextStepSliding) {
+  const Matrix2 m = testMetric();
+  const double N = 10.0, capacity = mu * N + c;
+  const Vector2 e = Vector2(0.4, 1.0) / normIn(m, Vector2(0.4, 1.0));
+  ContactMaterial3D mat(1, mu, G, c, t);
+  mat.setIterate(0.0, 4.0 * capacity / G * e, N, m);
+  ASSERT_TRUE(mat.sliding());
+  mat.commitState();
+  const Vector2 se = mat.committedElasticSlip();
+  const Vector2 mr = m * se / normIn(m, se);
+  const Matrix2 slidingTangent = G * (m - mr * mr.transpose());
+  // The re-projected metric shrinks |s_e|_m by 1e-7: the return map alone would stick.
+  const Matrix2 drifted = (1.0 - 2e-7) * m;
+  mat.setTrialState(0.0, Vector2::Zero(), N, drifted);
+  ASSERT_FALSE(mat.sliding());
+  mat.setIterate(0.0, Vector2::Zero(), N, drifted);
+  EXPECT_TRUE(mat.sliding());
+  EXPECT_NEAR(mat.tractionNorm(), capacity, 1e-12 * capacity);  // on the surface
+  EXPECT_LE((mat.tangentSlip() - (1.0 - 2e-7) * slidingTangent).norm(), 1e-6 * G * m.norm());
+  EXPECT_LE((mat.tangentNormal() - mu * mr).norm(), 1e-6 * mu * mr.norm());
+  // The same state asked again (an integrator may update twice): the same answer.
+  const Vector2 first = mat.traction();
+  mat.setIterate(0.0, Vector2::Zero(), N, drifted);
+  EXPECT_EQ(mat.traction(), first);
+  // The next iterate moves on along the slide: the return map slides at mu N + c.
+  mat.setIterate(0.0, 1e-3 * e, N, drifted);
+  EXPECT_TRUE(mat.sliding());
+  EXPECT_NEAR(mat.tractionNorm(), capacity, 1e-12 * capacity);
+  // A first iterate that has moved back (a reversal) is the return map's: it sticks.
+  mat.revertToLastCommit();
+  mat.setIterate(0.0, -0.1 * capacity / G * e, N, m);
+  EXPECT_FALSE(mat.sliding());
+  EXPECT_LE((mat.tangentSlip() - G * m).norm(), 1e-12 * G * m.norm());
+  // A node that stuck at the last commit starts sticking.
+  mat.revertToStart();
+  mat.setIterate(0.0, 0.5 * capacity / G * e, N, m);
+  mat.commitState();
+  mat.setIterate(0.0, Vector2::Zero(), N, m);
+  EXPECT_FALSE(mat.sliding());
+}
+
 TEST(ContactMaterial3D, CloneServesOnlyContactElements) {
   ContactMaterial3D mat(3, mu, G, c, t);
   EXPECT_TRUE(dynamic_cast<ContactMaterial3D*>(mat.clone("ContactMaterial3D").get()));

@@ -24,7 +24,7 @@ COARSE = DonutPullout(mu=0.5, n_theta=8, n_radial=2, n_z=5, pull=0.09, steps=30)
 
 @pytest.fixture(scope="module")
 def coarse():
-    return run(COARSE, extra_after_full_sliding=1)
+    return run(COARSE, extra_after_full_sliding=3)
 
 
 @pytest.mark.parametrize("n_theta", [6, 8, 12])
@@ -75,6 +75,17 @@ def test_full_sliding_head_force_is_mu_times_the_normal_sum(coarse):
     # Sliding is steady: the step after full sliding changes nothing that matters.
     j = r.full_sliding
     assert r.head_force[k] == pytest.approx(r.head_force[j], rel=1e-3)
+
+
+def test_steady_sliding_converges_in_one_newton_iteration_per_step(coarse):
+    """Once every contact slides, each step starts from the converged state's sliding tangent
+    (C16 with gamma = 0) and the problem is linear along the slide: one iteration per step, as
+    OpenSeesPy takes on this scene. Before full sliding contacts change from stick to slip and
+    need more."""
+    r = coarse
+    after = r.iterations[r.full_sliding + 1:]
+    assert len(after) >= 2 and all(n == 1 for n in after), r.iterations
+    assert max(r.iterations[:r.full_sliding + 1]) > 1
 
 
 def test_pullout_q_over_beta_is_facet_factor_times_unloading(coarse):
