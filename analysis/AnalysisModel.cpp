@@ -50,15 +50,18 @@ void AnalysisModel::chooseSolver(LinearSolver& solver) {
                       : n == 0                                 ? "no condensation (no equations)"
                                                                : "no condensation (it failed on this model)";
   if (mode != LinearSolver::Condensation::Off && n > 0 && condensationRefusedStamp_ != builtStamp_) {
-    // Interior: equations that constant-tangent elements touch and no other.
+    // Interior: equations that constant-tangent elements touch and no other
+    // (or only through a constant, uncoupled dof such as a multiplier's inert ones).
     interior.assign(n, 0);
     std::vector<char> variable(n, 0);
     const auto& elements = map_.elements();
     for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
       const bool constant = elements[e]->hasConstantTangent();
-      for (int i = 0; i < map_.elementMaps()[e].numDOF; ++i)
+      for (int i = 0; i < map_.elementMaps()[e].numDOF; ++i) {
+        const bool fixedRow = constant || elements[e]->hasConstantUncoupledDof(i);
         for (auto* t = map_.elementTermsBegin(e, i); t != map_.elementTermsEnd(e, i); ++t)
-          (constant ? interior : variable)[t->equation] = 1;
+          (fixedRow ? interior : variable)[t->equation] = 1;
+      }
     }
     int nI = 0;
     for (int eq = 0; eq < n; ++eq) {

@@ -132,6 +132,10 @@ class Element {
   // True when the tangent never changes (linear material and geometry): the
   // solver may condense the dofs only such elements touch, once per model.
   virtual bool hasConstantTangent() const { return false; }
+  // True when the tangent's row and column of local dof i never change and
+  // couple it to no other dof (the inert dofs of a Lagrange multiplier node):
+  // the solver may condense that dof with the constant part of the model.
+  virtual bool hasConstantUncoupledDof(int /*i*/) const { return false; }
 
   // The node (index into nodes()) at which the element is drawn as a point
   // (VTK_VERTEX) by the PVD recorder, e.g. a node-to-node contact; -1, the

@@ -59,6 +59,8 @@ class BeamContact3D : public BeamContactElement {
   double forceTolerance() const { return multiplier_.forceTolerance(); }
   // The last node carries lambda.
   std::vector<int> multiplierNodes() const override { return {nodeTags().back()}; }
+  // The multiplier node's two inert dofs (unit stiffness, ContactMultiplier::setRows).
+  bool hasConstantUncoupledDof(int i) const override { return i >= numDOF() - 2; }
 
  protected:
   void setDomain(Domain& domain) override;

@@ -347,6 +347,13 @@ TEST(BeamContact3D, TangentMatchesFiniteDifferencesStickingAndSliding) {
       EXPECT_EQ(K(15, 15), 0.0);
       EXPECT_EQ(K(16, 16), 1.0);
       EXPECT_EQ(K(17, 17), 1.0);
+      // ... coupled to nothing, as hasConstantUncoupledDof tells the solver (which condenses them).
+      for (int i : {16, 17}) {
+        EXPECT_EQ(K.row(i).norm(), 1.0);
+        EXPECT_EQ(K.col(i).norm(), 1.0);
+        EXPECT_TRUE(m->element->hasConstantUncoupledDof(i));
+      }
+      for (int i = 0; i < 16; ++i) EXPECT_FALSE(m->element->hasConstantUncoupledDof(i)) << i;
       EXPECT_EQ(m->element->resistingForce()(15), -m->geometry().gap());
     }
   }

@@ -240,6 +240,12 @@ TEST(BeamEndContact3D, TangentMatchesFiniteDifferencesStraightAndTurnedTip) {
       EXPECT_EQ(K(15, 15), 0.0);
       EXPECT_EQ(K(16, 16), 1.0);
       EXPECT_EQ(K(17, 17), 1.0);
+      for (int i : {16, 17}) {  // inert: coupled to nothing, condensed by the solver
+        EXPECT_EQ(K.row(i).norm(), 1.0);
+        EXPECT_EQ(K.col(i).norm(), 1.0);
+        EXPECT_TRUE(m->element->hasConstantUncoupledDof(i));
+      }
+      EXPECT_FALSE(m->element->hasConstantUncoupledDof(15));
       EXPECT_EQ(m->element->resistingForce()(15), -m->element->gap());
       // Node j carries nothing.
       EXPECT_EQ(K.block(6, 0, 6, 18).norm(), 0.0);

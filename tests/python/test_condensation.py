@@ -264,6 +264,27 @@ def test_donut_pullout_condensed_equals_plain(monkeypatch):
     assert _close(on.head_disp, off.head_disp)
 
 
+def test_multiplier_nodes_inert_dofs_are_condensed(monkeypatch):
+    """A BeamContact3D multiplier node's two inert dofs (unit stiffness, coupled to nothing) go
+    with the constant part: the dense interface holds each contact's soil node (3 dofs, less the
+    fixed base) and its normal-force dof, not the inert ones (2 of the 4 equations per contact
+    that would otherwise be dense)."""
+    monkeypatch.setenv("BEAMSOLID_CONDENSE", "on")
+    setup = dataclasses.replace(donut_pullout.DonutPullout(), n_theta=8, n_radial=2, n_z=4, steps=4)
+    model = donut_pullout.DonutModel(setup).build()
+    model.geostatic()
+    model.release()  # the pile free along its axis, the head's motion imposed
+    assert model.m.analyze(1) == 0
+    info = model.m.solver_info()
+    contacts = setup.n_theta * (setup.n_z + 1)
+    base = setup.n_theta  # soil nodes of the deepest level: z fixed
+    pile = len(model.pile_nodes) - 1  # the axial dof of each pile node but the head's
+    assert info["condensed"]
+    assert info["interface"] == 3 * contacts - base + contacts + pile
+    assert info["interior"] + info["interface"] == info["equations"]
+    model.m.wipe()
+
+
 def _pullout(m):
     """test_pile_interface's chained pullout: a pile pulled 1.1 through a confined soil donut, every
     soil node handed over to the next segment on the way."""
