@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 
+#include "analysis/CondensationCache.h"
 #include "core/BlasThreads.h"
 #include "core/OpenSeesError.h"
 
@@ -173,6 +174,20 @@ void CondensedSolver::analyze(const SparseView& A) {
 bool CondensedSolver::condense() {
   Timed timed{condenseSeconds_};
   BlasThreads::Scope threads(nB_ >= kThreadedInterface ? BlasThreads::available() : 1);
+  // The same constant part condensed before in this process (a rebuilt model): reuse it.
+  std::unique_ptr<CondensationCache::Key> key;
+  if (nI_ > 0 && CondensationCache::enabled()) {
+    key = std::make_unique<CondensationCache::Key>(CondensationCache::Key{
+        interior_, iiStart_, iiRow_, ibStart_, ibRow_, biRow_, biCol_, iiValues_, ibValues_, biValues_});
+    cholmod_factor* cached = nullptr;
+    if (CondensationCache::find(*key, common_, &cached, coupling_)) {
+      if (factor_) cholmod_free_factor(&factor_, common_);
+      factor_ = cached;
+      condensed_ = true;
+      ++numCondensationsReused_;
+      return true;
+    }
+  }
   if (nI_ > 0) {
     cholmod_sparse s = symmetricView(nI_, iiStart_, iiRow_, iiValues_);
     cholmod_factorize(&s, factor_, common_);
@@ -221,6 +236,7 @@ bool CondensedSolver::condense() {
   }
   condensed_ = true;
   ++numCondensations_;
+  if (key) CondensationCache::store(*key, factor_, coupling_);
   return true;
 }
 

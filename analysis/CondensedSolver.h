@@ -59,6 +59,9 @@ class CondensedSolver : public LinearSolver {
   int numInterface() const { return nB_; }
   // How often A_II was factored and the Schur complement formed.
   int numCondensations() const { return numCondensations_; }
+  // Condensations taken from the process's CondensationCache instead (a model
+  // rebuilt with the same constant part).
+  int numCondensationsReused() const { return numCondensationsReused_; }
   // Dense factorizations of S, and GMRES iterations over all interface solves.
   int numInterfaceFactorizations() const { return numInterfaceFactorizations_; }
   long numKrylovIterations() const { return numKrylovIterations_; }
@@ -91,7 +94,7 @@ class CondensedSolver : public LinearSolver {
   std::vector<int> bbDense_, bbSource_;  // A_BB entries: column-major index in S
   std::vector<double> iiValues_, ibValues_, biValues_;
   bool condensed_ = false;
-  int numCondensations_ = 0;
+  int numCondensations_ = 0, numCondensationsReused_ = 0;
 
   std::vector<double> coupling_;  // A_BI A_II^-1 A_IB, dense n_B x n_B
   std::vector<double> schur_;     // factored S_ref

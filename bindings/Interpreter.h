@@ -45,7 +45,8 @@ class Interpreter {
   struct SolverInfo {
     std::string system, backend, note;
     bool condensed = false;
-    int equations = 0, interior = 0, interface = 0, condensations = 0, factorizations = 0, analyses = 0;
+    int equations = 0, interior = 0, interface = 0, condensations = 0, condensationsReused = 0, factorizations = 0,
+        analyses = 0;
     int interfaceFactorizations = 0;
     long krylovIterations = 0;
     double condenseSeconds = 0.0, interfaceFactorSeconds = 0.0, interfaceSolveSeconds = 0.0;

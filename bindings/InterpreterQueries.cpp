@@ -210,6 +210,7 @@ Interpreter::SolverInfo Interpreter::solverInfo() const {
     info.interior = c->numInterior();
     info.interface = c->numInterface();
     info.condensations = c->numCondensations();
+    info.condensationsReused = c->numCondensationsReused();
     info.interfaceFactorizations = c->numInterfaceFactorizations();
     info.krylovIterations = c->numKrylovIterations();
     info.condenseSeconds = c->condenseSeconds();

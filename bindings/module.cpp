@@ -197,6 +197,7 @@ PYBIND11_MODULE(_beamsolid, m) {
              d["interior"] = i.interior;
              d["interface"] = i.interface;
              d["condensations"] = i.condensations;
+             d["condensations_reused"] = i.condensationsReused;
              d["interface_factorizations"] = i.interfaceFactorizations;
              d["krylov_iterations"] = i.krylovIterations;
              d["condense_seconds"] = i.condenseSeconds;

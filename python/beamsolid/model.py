@@ -64,7 +64,9 @@ class Model:
         ``system`` (the name asked for), ``backend`` (what runs), ``equations``;
         ``condensed`` with ``interior`` and ``interface`` equation counts when the
         equations only constant-tangent elements touch are condensed out, and
-        ``condensations`` (how often that was done), ``factorizations`` and
+        ``condensations`` (how often that was done), ``condensations_reused`` (how often the
+        process had condensed the same constant part before, in a rebuilt model, and it was taken
+        from there; BEAMSOLID_CONDENSE_CACHE=off stops that), ``factorizations`` and
         ``analyses`` (symbolic) so far, ``solver_seconds`` (wall time in factorizations and solves
         of this analysis); ``note`` says why or why not. Switch
         condensation with ``system(name, '-condense', 'auto'|'on'|'off')`` or the

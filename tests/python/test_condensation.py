@@ -21,6 +21,14 @@ from beamsolid.scenes import donut_pullout, lateral_pile
 RTOL = 1e-9
 
 
+@pytest.fixture(autouse=True)
+def _condense_every_model(monkeypatch):
+    """Each test's models condense for themselves: the counts below are per model, and an identical
+    model of an earlier test must not lend its condensation (test_a_rebuilt_model_... turns the
+    process cache back on)."""
+    monkeypatch.setenv("BEAMSOLID_CONDENSE_CACHE", "off")
+
+
 def _close(a, b, rtol=RTOL):
     a, b = np.asarray(a, float), np.asarray(b, float)
     scale = max(np.abs(b).max(), 1e-300)
@@ -283,6 +291,50 @@ def test_multiplier_nodes_inert_dofs_are_condensed(monkeypatch):
     assert info["interface"] == 3 * contacts - base + contacts + pile
     assert info["interior"] + info["interface"] == info["equations"]
     model.m.wipe()
+
+
+def _donut_push(setup):
+    """Both stages of a small donut pullout; the pull's head forces and displacements and the
+    push stage's solver_info."""
+    model = donut_pullout.DonutModel(setup).build()
+    model.geostatic()
+    model.release()
+    r = donut_pullout.PulloutResult(setup=setup, n_contacts=len(model.contacts))
+    model.record(r)
+    model.pull(r, None)
+    info = model.m.solver_info()
+    model.m.wipe()
+    return np.array(r.head_force), np.array(r.head_disp), info
+
+
+def test_a_rebuilt_model_reuses_its_condensation_exactly(monkeypatch):
+    """A sweep that wipes and rebuilds the same soil (here: another friction coefficient) gets the
+    condensation of the first build back (CondensationCache): the same answers, bit for bit, as
+    condensing again; a changed soil is condensed afresh; BEAMSOLID_CONDENSE_CACHE=off stops it."""
+    monkeypatch.delenv("BEAMSOLID_CONDENSE_CACHE")
+    monkeypatch.setenv("BEAMSOLID_CONDENSE", "on")
+    # A soil modulus no other test uses: the first build cannot find an earlier condensation.
+    first = dataclasses.replace(donut_pullout.DonutPullout(), n_theta=8, n_radial=2, n_z=4, steps=4,
+                                soil_E=20e3 * 1.000123, mu=0.5)
+    f1, d1, info1 = _donut_push(first)
+    assert info1["condensations"] == 1 and info1["condensations_reused"] == 0
+    other_mu = dataclasses.replace(first, mu=0.3)
+    f2, d2, info2 = _donut_push(other_mu)
+    assert info2["condensations"] == 0 and info2["condensations_reused"] == 1
+    monkeypatch.setenv("BEAMSOLID_CONDENSE_CACHE", "off")
+    f3, d3, info3 = _donut_push(other_mu)
+    assert info3["condensations"] == 1 and info3["condensations_reused"] == 0
+    assert np.array_equal(f2, f3) and np.array_equal(d2, d3)
+    monkeypatch.delenv("BEAMSOLID_CONDENSE_CACHE")
+    # The plain solve agrees (to the tolerance of any two solvers).
+    monkeypatch.setenv("BEAMSOLID_CONDENSE", "off")
+    f4, d4, _ = _donut_push(other_mu)
+    assert _close(f2, f4) and _close(d2, d4)
+    # Another soil: condensed afresh.
+    monkeypatch.setenv("BEAMSOLID_CONDENSE", "on")
+    f5, _, info5 = _donut_push(dataclasses.replace(other_mu, soil_E=other_mu.soil_E * 2))
+    assert info5["condensations"] == 1 and info5["condensations_reused"] == 0
+    assert not np.allclose(f5, f2, rtol=1e-3)
 
 
 def _pullout(m):
