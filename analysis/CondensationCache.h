@@ -35,7 +35,7 @@ class CondensationCache {
   static long hits();
 
  private:
-  static constexpr std::size_t kMaxBytes = std::size_t(1) << 30;
+  static constexpr std::size_t kMaxBytes = std::size_t(256) << 20;  // a copy costs memory and time too
 };
 
 }  // namespace beamsolid
