@@ -154,6 +154,7 @@ class Interpreter {
   Result start(CommandArgs&);
   Result stop(CommandArgs&);
   Result logFile(CommandArgs&);
+  Result defaultUnits(CommandArgs&);
   Result nodeBounds(CommandArgs&);
   Result numIter(CommandArgs&);
   Result basicForce(CommandArgs&);

@@ -303,3 +303,31 @@ def test_rigid_link_beam_in_2d(m):
         m.node(1, 0.0)
         m.node(2, 1.0)
         m.rigidLink("beam", 1, 2)
+
+
+def test_default_units_checks_names_and_scales_nothing(m):
+    # OpenSeesPy's defaultUnits returns None and leaves every number as typed:
+    # a cantilever bar's tip displacement stays P L / (E A) in the script's units.
+    m.model("basic", "-ndm", 2, "-ndf", 2)
+    assert m.defaultUnits("-force", "kip", "-length", "in", "-time", "sec", "-temp", "F") is None
+    assert m.defaultUnits("-Length", "m", "-Force", "kN", "-Time", "sec") is None
+    m.node(1, 0.0, 0.0)
+    m.node(2, 120.0, 0.0)
+    assert m.nodeCoord(2) == [120.0, 0.0]
+    m.fix(1, 1, 1)
+    m.fix(2, 0, 1)
+    m.uniaxialMaterial("Elastic", 1, 29000.0)
+    m.element("truss", 1, 1, 2, 2.5, 1)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(2, 10.0, 0.0)
+    assert static(m, "Plain") == 0
+    assert m.nodeDisp(2, 1) == pytest.approx(10.0 * 120.0 / (29000.0 * 2.5), rel=1e-13)
+    for bad, match in [(("-force", "kip", "-length", "in"), "missing a unit type"),
+                       (("-force", "lbf", "-length", "in", "-time", "sec"), "force unit 'lbf'"),
+                       (("-force", "kip", "-length", "km", "-time", "sec"), "length unit 'km'"),
+                       (("-force", "kip", "-length", "in", "-time", "min"), "time unit 'min'"),
+                       (("-force", "kip", "-length", "in", "-time", "sec", "-extra", 1), "unrecognized unit flag"),
+                       (("-force", 1.0, "-length", "in", "-time", "sec"), "force unit")]:
+        with pytest.raises(beamsolid.OpenSeesError, match="defaultUnits.*" + match):
+            m.defaultUnits(*bad)
