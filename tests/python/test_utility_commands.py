@@ -331,3 +331,29 @@ def test_default_units_checks_names_and_scales_nothing(m):
                        (("-force", 1.0, "-length", "in", "-time", "sec"), "force unit")]:
         with pytest.raises(beamsolid.OpenSeesError, match="defaultUnits.*" + match):
             m.defaultUnits(*bad)
+
+
+def test_mass_values_beyond_the_node_dofs_are_dropped_with_a_warning(m, capfd):
+    # OpenSees (and its dev_test_Brick script) gives 3-dof nodes six masses:
+    # the first ndf are the node's, the rest are dropped. A bar k = EA/L with
+    # the tip's x mass 2: omega^2 = k / 2.
+    m.model("basic", "-ndm", 3, "-ndf", 3)
+    m.node(1, 0.0, 0.0, 0.0)
+    m.node(2, 4.0, 0.0, 0.0, "-mass", 2.0, 5.0, 5.0, 1e-5, 1e-5, 1e-5)
+    m.node(3, 8.0, 0.0, 0.0)
+    m.mass(3, 0.49, 0.49, 0.49, 0.00001, 0.00001, 0.00001)
+    assert m.nodeMass(2) == [2.0, 5.0, 5.0]
+    assert m.nodeMass(3) == [0.49, 0.49, 0.49]
+    err = capfd.readouterr().err
+    assert "WARNING node 2 - 6 mass values for 3 dofs" in err
+    assert "WARNING mass 3 - 6 mass values for 3 dofs" in err
+    m.fix(1, 1, 1, 1)
+    m.fix(2, 0, 1, 1)
+    m.fix(3, 1, 1, 1)
+    m.uniaxialMaterial("Elastic", 1, 100.0)
+    m.element("truss", 1, 1, 2, 1.0, 1)
+    lam = m.eigen("-fullGenLapack", 1)
+    assert lam[0] == pytest.approx((100.0 / 4.0) / 2.0, rel=1e-12)
+    # Fewer values than dofs stay an error (OpenSees would zero the rest silently).
+    with pytest.raises(beamsolid.OpenSeesError, match="mass 3: the node has 3 dofs but 2 mass values"):
+        m.mass(3, 1.0, 1.0)
