@@ -42,6 +42,7 @@ std::string allowedNdfText(int ndm) {
 Result Interpreter::wipe(CommandArgs& a) {
   a.expectEnd();
   DofMap::resetWarnings();
+  extraMassWarned_ = false;
   // A recorder that cannot write its file still leaves the model wiped; its
   // error is raised at the end.
   std::exception_ptr recorderFailure;
@@ -92,13 +93,16 @@ namespace {
 // (an OpenSeesPy test gives a 3-dof brick node six): kept for unchanged
 // scripts, with a warning. Fewer values than dofs stay an error: OpenSees
 // would leave the missing masses zero without a word.
-Vector massPerDof(const Vector& given, int ndf, CommandArgs& a) {
+// `warned`: said once until wipe (a meshing loop repeats it per node).
+Vector massPerDof(const Vector& given, int ndf, CommandArgs& a, bool& warned) {
   if (given.size() < ndf)
     a.fail("the node has " + std::to_string(ndf) + " dofs but " + std::to_string(given.size()) +
            " mass values were given");
-  if (given.size() > ndf)
+  if (given.size() > ndf && !warned) {
     std::cerr << "WARNING " << a.context() << " - " << given.size() << " mass values for " << ndf
-              << " dofs: the values beyond the " << ndf << " are ignored\n";
+              << " dofs: the values beyond the " << ndf << " are ignored (said once until wipe)\n";
+    warned = true;
+  }
   return given.head(ndf);
 }
 
@@ -147,7 +151,7 @@ Result Interpreter::node(CommandArgs& a) {
     }
   }
   auto n = std::make_unique<Node>(tag, ndf, x, ndm);
-  if (mass.size()) n->setMass(massPerDof(mass, ndf, a));
+  if (mass.size()) n->setMass(massPerDof(mass, ndf, a, extraMassWarned_));
   if (disp.size()) {
     if (disp.size() != ndf) a.fail("-disp needs " + std::to_string(ndf) + " values, got " + std::to_string(disp.size()));
     n->setTrialDisp(disp);
@@ -329,7 +333,7 @@ Result Interpreter::mass(CommandArgs& a) {
   Node& n = domain_->node(tag, a.context());
   auto m = a.nextDoubles("mass", 1);
   a.expectEnd();
-  n.setMass(massPerDof(Eigen::Map<Vector>(m.data(), m.size()), n.ndf(), a));
+  n.setMass(massPerDof(Eigen::Map<Vector>(m.data(), m.size()), n.ndf(), a, extraMassWarned_));
   return {};
 }
 

@@ -345,8 +345,9 @@ def test_mass_values_beyond_the_node_dofs_are_dropped_with_a_warning(m, capfd):
     assert m.nodeMass(2) == [2.0, 5.0, 5.0]
     assert m.nodeMass(3) == [0.49, 0.49, 0.49]
     err = capfd.readouterr().err
+    # Said once until wipe: a meshing loop would repeat it for every node.
     assert "WARNING node 2 - 6 mass values for 3 dofs" in err
-    assert "WARNING mass 3 - 6 mass values for 3 dofs" in err
+    assert "WARNING mass 3" not in err
     m.fix(1, 1, 1, 1)
     m.fix(2, 0, 1, 1)
     m.fix(3, 1, 1, 1)
