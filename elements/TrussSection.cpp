@@ -27,9 +27,11 @@ void TrussSection::print(std::ostream& os) const {
 
 bool TrussSection::isSectionForm(const CommandArgs& args) {
   // truss: A, matTag, options; section truss: secTag, options. The area form
-  // has a number where the section form has the end or an option flag.
-  const std::size_t next = args.position() + 1;
-  return args.nextIsNumber() && (next >= args.size() || std::holds_alternative<std::string>(args.at(next)));
+  // has a number where the section form has the end or an option flag, and
+  // a tag is an integer (truss(..., 1.0) is an area with its material missing).
+  const std::size_t at = args.position();
+  return at < args.size() && std::holds_alternative<long long>(args.at(at)) &&
+         (at + 1 >= args.size() || std::holds_alternative<std::string>(args.at(at + 1)));
 }
 
 std::unique_ptr<Element> TrussSection::build(CommandArgs& args, Domain& domain, int tag, int iNode, int jNode) {

@@ -134,3 +134,6 @@ def test_section_without_axial_component_is_refused(ops):
         ops.element("Truss", 2, 1, 2, 7)
     with pytest.raises(beamsolid.OpenSeesError, match="option"):
         ops.element("TrussSection", 3, 1, 2, 1, "-bogus", 1)
+    # A float is an area, not a section tag: the truss form, its material missing.
+    with pytest.raises(beamsolid.OpenSeesError, match="element truss 4.*matTag"):
+        ops.element("Truss", 4, 1, 2, 1.0)
