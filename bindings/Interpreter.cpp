@@ -107,6 +107,7 @@ const std::map<std::string, Interpreter::Command>& Interpreter::commands() {
       {"start", &Interpreter::start},
       {"stop", &Interpreter::stop},
       {"logFile", &Interpreter::logFile},
+      {"defaultUnits", &Interpreter::defaultUnits},
       {"nodeBounds", &Interpreter::nodeBounds},
       {"numIter", &Interpreter::numIter},
       {"basicForce", &Interpreter::basicForce},

@@ -155,6 +155,7 @@ class Interpreter {
   Result start(CommandArgs&);
   Result stop(CommandArgs&);
   Result logFile(CommandArgs&);
+  Result defaultUnits(CommandArgs&);
   Result nodeBounds(CommandArgs&);
   Result numIter(CommandArgs&);
   Result basicForce(CommandArgs&);
@@ -244,6 +245,7 @@ class Interpreter {
   std::string lastError_;
   std::chrono::steady_clock::time_point timerStart_;
   bool timerRunning_ = false;
+  bool extraMassWarned_ = false;  // mass values beyond a node's ndf, said once until wipe
   std::vector<double> eigenvalues_;
   // modalProperties has run since the last eigen (responseSpectrumAnalysis needs it, as OpenSees).
   bool haveModalProperties_ = false;

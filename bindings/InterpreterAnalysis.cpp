@@ -148,7 +148,14 @@ Result Interpreter::eigen(CommandArgs& a) {
       if (opt == "-fullGenLapack") dense = true;
       else if (opt == "-standard") standard = true;  // K phi = lambda phi, as OpenSees
       else if (opt == "-genBandArpack" || opt == "-symmBandLapack" || opt == "-generalized") {}
-      else a.fail("unknown option '" + opt + "' (expected -genBandArpack, -fullGenLapack, -symmBandLapack, -standard or -generalized)");
+      else {
+        // OpenSees prints "unknown option" and solves with its default solver
+        // (OpenSeesPy's own test_EigenFrameExtra passes -UmfPack, -SuperLU,
+        // -ProfileSPD); the solver changes no eigenvalue, so do the same.
+        std::cerr << "WARNING eigen - unknown option '" << opt
+                  << "' ignored (known: -genBandArpack, -fullGenLapack, -symmBandLapack, -standard, "
+                     "-generalized); the default solver runs\n";
+      }
     } else {
       numModes = a.nextInt("numEigenvalues");
     }

@@ -36,6 +36,9 @@ int elementArgumentCount(const std::string& type) {
       {"bbarQuad", 2},     // thick, matTag
       {"SSPquad", 3},      // matTag, type, thick
       {"ShellMITC4", 1},   // secTag
+      {"shellMITC4", 1},   // OpenSees' other names of ShellMITC4
+      {"Shell", 1},
+      {"shell", 1},
       {"ShellDKGQ", 1},
       {"ShellNLDKGQ", 1},
   };
@@ -97,7 +100,7 @@ Result Interpreter::block2D(CommandArgs& a) {
   const int count = elementArgumentCount(type);
   if (count < 0)
     a.fail("element type '" + type +
-           "' is not a quadrilateral block2D can mesh (expected quad, enhancedQuad, bbarQuad, SSPquad, ShellMITC4, "
+           "' is not a quadrilateral block2D can mesh (expected quad, enhancedQuad, bbarQuad, SSPquad, ShellMITC4 (shell), "
            "ShellDKGQ or ShellNLDKGQ)");
   if (static_cast<int>(a.remaining()) < count) a.fail("expected " + std::to_string(count) + " eleArgs for " + type);
   std::vector<CommandArgs::Value> eleArgs;

@@ -1,6 +1,8 @@
 // Model-building commands of the Interpreter.
+#include <algorithm>
 #include <cmath>
 #include <exception>
+#include <iostream>
 #include <optional>
 
 #include "bindings/Interpreter.h"
@@ -40,6 +42,7 @@ std::string allowedNdfText(int ndm) {
 Result Interpreter::wipe(CommandArgs& a) {
   a.expectEnd();
   DofMap::resetWarnings();
+  extraMassWarned_ = false;
   // A recorder that cannot write its file still leaves the model wiped; its
   // error is raised at the end.
   std::exception_ptr recorderFailure;
@@ -84,6 +87,27 @@ Result Interpreter::model(CommandArgs& a) {
   return {};
 }
 
+namespace {
+
+// OpenSees takes a node's masses one per dof and drops values beyond its ndf
+// (an OpenSeesPy test gives a 3-dof brick node six): kept for unchanged
+// scripts, with a warning. Fewer values than dofs stay an error: OpenSees
+// would leave the missing masses zero without a word.
+// `warned`: said once until wipe (a meshing loop repeats it per node).
+Vector massPerDof(const Vector& given, int ndf, CommandArgs& a, bool& warned) {
+  if (given.size() < ndf)
+    a.fail("the node has " + std::to_string(ndf) + " dofs but " + std::to_string(given.size()) +
+           " mass values were given");
+  if (given.size() > ndf && !warned) {
+    std::cerr << "WARNING " << a.context() << " - " << given.size() << " mass values for " << ndf
+              << " dofs: the values beyond the " << ndf << " are ignored (said once until wipe)\n";
+    warned = true;
+  }
+  return given.head(ndf);
+}
+
+}  // namespace
+
 Result Interpreter::node(CommandArgs& a) {
   requireModel(a);
   const int tag = a.nextInt("nodeTag");
@@ -127,10 +151,7 @@ Result Interpreter::node(CommandArgs& a) {
     }
   }
   auto n = std::make_unique<Node>(tag, ndf, x, ndm);
-  if (mass.size()) {
-    if (mass.size() != ndf) a.fail("-mass needs " + std::to_string(ndf) + " values, got " + std::to_string(mass.size()));
-    n->setMass(mass);
-  }
+  if (mass.size()) n->setMass(massPerDof(mass, ndf, a, extraMassWarned_));
   if (disp.size()) {
     if (disp.size() != ndf) a.fail("-disp needs " + std::to_string(ndf) + " values, got " + std::to_string(disp.size()));
     n->setTrialDisp(disp);
@@ -312,10 +333,7 @@ Result Interpreter::mass(CommandArgs& a) {
   Node& n = domain_->node(tag, a.context());
   auto m = a.nextDoubles("mass", 1);
   a.expectEnd();
-  if (static_cast<int>(m.size()) != n.ndf())
-    a.fail("node " + std::to_string(tag) + " has " + std::to_string(n.ndf()) + " dofs but " + std::to_string(m.size()) +
-           " mass values were given");
-  n.setMass(Eigen::Map<Vector>(m.data(), m.size()));
+  n.setMass(massPerDof(Eigen::Map<Vector>(m.data(), m.size()), n.ndf(), a, extraMassWarned_));
   return {};
 }
 

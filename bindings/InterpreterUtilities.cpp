@@ -2,6 +2,7 @@
 // parallel stand-ins, element and section shortcuts, constraint queries, and
 // setting a node's state by hand.
 #include <algorithm>
+#include <cctype>
 #include <iostream>
 #include <set>
 
@@ -76,6 +77,38 @@ Result Interpreter::logFile(CommandArgs& a) {
   } catch (const OpenSeesError& e) {
     a.fail(e.what());
   }
+  return {};
+}
+
+// defaultUnits('-force', f, '-length', l, '-time', t, <'-temp', T>): OpenSees
+// (Tcl) defines unit variables from it; the Python command only checks the
+// names and returns None, as OpenSeesPy's. Nothing is scaled: the model's
+// numbers stay in whatever units the script uses.
+Result Interpreter::defaultUnits(CommandArgs& a) {
+  static const std::set<std::string> forces = {"lb", "lbs", "kip", "kips", "N", "kN", "kn", "MN", "kgf", "tonf"};
+  static const std::set<std::string> lengths = {"in", "inch", "ft", "feet", "mm", "cm", "m"};
+  static const std::set<std::string> times = {"sec", "Sec", "msec"};
+  bool force = false, length = false, time = false;
+  while (!a.done()) {
+    std::string flag = a.nextString("unit flag ('-force', '-length', '-time' or '-temp')");
+    std::transform(flag.begin(), flag.end(), flag.begin(), [](unsigned char c) { return std::tolower(c); });
+    auto check = [&](const char* what, const std::set<std::string>& valid, const char* options) {
+      const std::string unit = a.nextString(what);
+      if (!valid.count(unit)) a.fail("unknown " + std::string(what) + " '" + unit + "', valid options: " + options);
+    };
+    if (flag == "-force") {
+      check("force unit", forces, "lb, lbs, kip, kips, N, kN, MN, kgf, tonf");
+      force = true;
+    } else if (flag == "-length") {
+      check("length unit", lengths, "in, inch, ft, feet, mm, cm, m");
+      length = true;
+    } else if (flag == "-time") {
+      check("time unit", times, "sec, msec");
+      time = true;
+    } else if (flag == "-temp") a.nextString("temperature unit");
+    else a.fail("unrecognized unit flag '" + flag + "' (expected -force, -length, -time or -temp)");
+  }
+  if (!force || !length || !time) a.fail("missing a unit type: defaultUnits('-force', f, '-length', l, '-time', t)");
   return {};
 }
 

@@ -10,6 +10,7 @@ namespace beamsolid {
 std::string openSeesClassName(const std::string& elementClassName) {
   static const std::map<std::string, std::string> table = {
       {"elasticBeamColumn", "ElasticBeam3d"},   {"truss", "Truss"},
+      {"trussSection", "TrussSection"},
       {"ElasticTimoshenkoBeam", "ElasticTimoshenkoBeam3d"},
       {"corotTruss", "CorotTruss"},             {"zeroLength", "ZeroLength"},
       {"stdBrick", "Brick"},                    {"bbarBrick", "BbarBrick"},

@@ -228,6 +228,7 @@ bool PVDRecorder::cellKindOf(const std::string& className, CellKind& kind) {
       {"dispBeamColumn", CellKind::Beam},
       {"forceBeamColumn", CellKind::Beam},
       {"truss", CellKind::Truss},
+      {"trussSection", CellKind::Truss},
       {"corotTruss", CellKind::Truss},
       {"BeamContact3D", CellKind::Contact},
       {"BeamContact3Dp", CellKind::Contact},

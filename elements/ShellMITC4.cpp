@@ -268,7 +268,10 @@ std::unique_ptr<Element> buildShellMITC4(CommandArgs& args, Domain& domain) {
   return std::make_unique<ShellMITC4>(tag, nodes, section);
 }
 
-void registerShellMITC4(Registry& r) { r.elements.add("ShellMITC4", &buildShellMITC4); }
+void registerShellMITC4(Registry& r) {
+  // OpenSees' other names for the same element (OpenSeesPy's PlanarShearWall test meshes 'shell').
+  for (const char* name : {"ShellMITC4", "shellMITC4", "Shell", "shell"}) r.elements.add(name, &buildShellMITC4);
+}
 
 }  // namespace
 

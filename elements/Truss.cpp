@@ -7,6 +7,7 @@
 #include "core/Node.h"
 #include "core/OpenSeesError.h"
 #include "core/Registry.h"
+#include "elements/TrussSection.h"
 
 namespace beamsolid {
 
@@ -235,6 +236,8 @@ std::unique_ptr<Element> buildTruss(CommandArgs& args, Domain& domain) {
   args.setContext("element truss " + std::to_string(tag));
   const int iNode = args.nextInt("iNode");
   const int jNode = args.nextInt("jNode");
+  // element('Truss', tag, i, j, secTag, ...): OpenSees takes it as the section truss.
+  if (TrussSection::isSectionForm(args)) return TrussSection::build(args, domain, tag, iNode, jNode);
   const Truss::Options o = Truss::readOptions(args);
   const UniaxialMaterial& material = domain.uniaxialMaterials.get(o.matTag, args.context());
   return std::make_unique<Truss>(tag, iNode, jNode, o.area, material, o.rho, o.consistentMass, o.doRayleigh);

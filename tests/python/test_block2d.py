@@ -87,3 +87,29 @@ def test_bad_block2d_input_names_the_command(ops, args, fragment):
     ops.nDMaterial("ElasticIsotropic", 1, 1000.0, 0.25)
     with pytest.raises(beamsolid.OpenSeesError, match=fragment):
         ops.block2D(*args)
+
+
+@pytest.mark.parametrize("name", ["shell", "Shell", "shellMITC4", "ShellMITC4"])
+def test_shell_block_under_membrane_tension_is_exact(ops, name):
+    # OpenSees' other names of ShellMITC4 ('shell' in OpenSeesPy's
+    # PlanarShearWall test) mesh the same element: a membrane patch in the
+    # x-y plane pulled by sigma gives u = sigma x / E, v = -nu sigma y / E.
+    E, nu, t, sigma, L, H, nx, ny = 3000.0, 0.2, 12.0, 2.0, 120.0, 60.0, 4, 2
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    ops.section("ElasticMembranePlateSection", 1, E, nu, t, 0.0)
+    ops.block2D(nx, ny, 1, 1, name, 1, 1, 0.0, 0.0, 0.0, 2, L, 0.0, 0.0, 3, L, H, 0.0, 4, 0.0, H, 0.0)
+    for n in ops.getNodeTags():
+        x = ops.nodeCoord(n, 1)
+        ops.fix(n, 1 if x == 0.0 else 0, 1 if n == 1 else 0, 1, 1, 1, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    for j in range(ny + 1):
+        share = 0.5 if j in (0, ny) else 1.0
+        ops.load((j + 1) * (nx + 1), share * sigma * t * H / ny, 0.0, 0.0, 0.0, 0.0, 0.0)
+    ops.analysis("Static")
+    assert ops.analyze(1) == 0
+    assert ops.eleType(1) == "ShellMITC4"
+    for n in ops.getNodeTags():
+        x, y, _ = ops.nodeCoord(n)
+        assert ops.nodeDisp(n)[:2] == pytest.approx([sigma / E * x, -nu * sigma / E * y], abs=1e-12)

@@ -190,3 +190,26 @@ def test_mode_components_without_motion_are_exactly_zero(ops):
         moving = 0 if abs(phi[0]) > abs(phi[1]) else 1
         assert abs(phi[moving]) > 0.0
         assert phi[1 - moving] == 0.0 and phi[2] == 0.0
+
+
+@pytest.mark.parametrize("option", ["-UmfPack", "-SuperLU", "-ProfileSPD"])
+def test_eigen_ignores_unknown_solver_options_with_a_warning(option, capfd):
+    # OpenSeesPy's test_EigenFrameExtra passes system names to eigen; OpenSees
+    # says "unknown option" and runs its default solver. A two-storey spring
+    # chain k = m = 1 (springs 1-2, 2-3, node 1 fixed): lambda = (3 -+ sqrt 5) / 2.
+    import beamsolid.opensees as ops
+
+    ops.wipe()
+    ops.model("basic", "-ndm", 1, "-ndf", 1)
+    for tag, x in ((1, 0.0), (2, 1.0), (3, 2.0)):
+        ops.node(tag, x)
+    ops.fix(1, 1)
+    ops.mass(2, 1.0)
+    ops.mass(3, 1.0)
+    ops.uniaxialMaterial("Elastic", 1, 1.0)
+    ops.element("zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1)
+    ops.element("zeroLength", 2, 2, 3, "-mat", 1, "-dir", 1)
+    lam = ops.eigen(option, 2)
+    assert lam == pytest.approx([(3 - 5**0.5) / 2, (3 + 5**0.5) / 2], rel=1e-12)
+    assert f"WARNING eigen - unknown option '{option}' ignored" in capfd.readouterr().err
+    ops.wipe()

@@ -303,3 +303,58 @@ def test_rigid_link_beam_in_2d(m):
         m.node(1, 0.0)
         m.node(2, 1.0)
         m.rigidLink("beam", 1, 2)
+
+
+def test_default_units_checks_names_and_scales_nothing(m):
+    # OpenSeesPy's defaultUnits returns None and leaves every number as typed:
+    # a cantilever bar's tip displacement stays P L / (E A) in the script's units.
+    m.model("basic", "-ndm", 2, "-ndf", 2)
+    assert m.defaultUnits("-force", "kip", "-length", "in", "-time", "sec", "-temp", "F") is None
+    assert m.defaultUnits("-Length", "m", "-Force", "kN", "-Time", "sec") is None
+    m.node(1, 0.0, 0.0)
+    m.node(2, 120.0, 0.0)
+    assert m.nodeCoord(2) == [120.0, 0.0]
+    m.fix(1, 1, 1)
+    m.fix(2, 0, 1)
+    m.uniaxialMaterial("Elastic", 1, 29000.0)
+    m.element("truss", 1, 1, 2, 2.5, 1)
+    m.timeSeries("Linear", 1)
+    m.pattern("Plain", 1, 1)
+    m.load(2, 10.0, 0.0)
+    assert static(m, "Plain") == 0
+    assert m.nodeDisp(2, 1) == pytest.approx(10.0 * 120.0 / (29000.0 * 2.5), rel=1e-13)
+    for bad, match in [(("-force", "kip", "-length", "in"), "missing a unit type"),
+                       (("-force", "lbf", "-length", "in", "-time", "sec"), "force unit 'lbf'"),
+                       (("-force", "kip", "-length", "km", "-time", "sec"), "length unit 'km'"),
+                       (("-force", "kip", "-length", "in", "-time", "min"), "time unit 'min'"),
+                       (("-force", "kip", "-length", "in", "-time", "sec", "-extra", 1), "unrecognized unit flag"),
+                       (("-force", 1.0, "-length", "in", "-time", "sec"), "force unit")]:
+        with pytest.raises(beamsolid.OpenSeesError, match="defaultUnits.*" + match):
+            m.defaultUnits(*bad)
+
+
+def test_mass_values_beyond_the_node_dofs_are_dropped_with_a_warning(m, capfd):
+    # OpenSees (and its dev_test_Brick script) gives 3-dof nodes six masses:
+    # the first ndf are the node's, the rest are dropped. A bar k = EA/L with
+    # the tip's x mass 2: omega^2 = k / 2.
+    m.model("basic", "-ndm", 3, "-ndf", 3)
+    m.node(1, 0.0, 0.0, 0.0)
+    m.node(2, 4.0, 0.0, 0.0, "-mass", 2.0, 5.0, 5.0, 1e-5, 1e-5, 1e-5)
+    m.node(3, 8.0, 0.0, 0.0)
+    m.mass(3, 0.49, 0.49, 0.49, 0.00001, 0.00001, 0.00001)
+    assert m.nodeMass(2) == [2.0, 5.0, 5.0]
+    assert m.nodeMass(3) == [0.49, 0.49, 0.49]
+    err = capfd.readouterr().err
+    # Said once until wipe: a meshing loop would repeat it for every node.
+    assert "WARNING node 2 - 6 mass values for 3 dofs" in err
+    assert "WARNING mass 3" not in err
+    m.fix(1, 1, 1, 1)
+    m.fix(2, 0, 1, 1)
+    m.fix(3, 1, 1, 1)
+    m.uniaxialMaterial("Elastic", 1, 100.0)
+    m.element("truss", 1, 1, 2, 1.0, 1)
+    lam = m.eigen("-fullGenLapack", 1)
+    assert lam[0] == pytest.approx((100.0 / 4.0) / 2.0, rel=1e-12)
+    # Fewer values than dofs stay an error (OpenSees would zero the rest silently).
+    with pytest.raises(beamsolid.OpenSeesError, match="mass 3: the node has 3 dofs but 2 mass values"):
+        m.mass(3, 1.0, 1.0)
