@@ -85,6 +85,8 @@ MatrixView SolidElement<Dim, C>::tangentStiff() {
   if (constantTangentValid_) return viewOf(*constantTangent_);
   if (hasConstantTangent()) {
     formStiffness(false, buffer(constantTangent_));
+    formInternalForce(referenceForce_);
+    referenceDisplacement_ = displacement_;
     constantTangentValid_ = true;
     return viewOf(*constantTangent_);
   }
@@ -109,7 +111,10 @@ typename SolidElement<Dim, C>::NodalVector SolidElement<Dim, C>::appliedLoad() c
 
 template <int Dim, class C>
 VectorView SolidElement<Dim, C>::resistingForce() {
-  formInternalForce(force_);
+  if (constantTangentValid_)
+    force_.noalias() = referenceForce_ + *constantTangent_ * (displacement_ - referenceDisplacement_);
+  else
+    formInternalForce(force_);
   force_ -= appliedLoad();
   return viewOf(force_);
 }
@@ -153,6 +158,7 @@ void SolidElement<Dim, C>::revertToLastCommit() {
 template <int Dim, class C>
 void SolidElement<Dim, C>::revertToStart() {
   for (auto& m : materials_) m->revertToStart();
+  materialsChanged();
 }
 
 template <int Dim, class C>

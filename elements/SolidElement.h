@@ -137,6 +137,11 @@ class SolidElement : public Element {
   // The tangent of linear materials, kept until something may change it.
   std::unique_ptr<NodalMatrix> constantTangent_;
   bool constantTangentValid_ = false;
+  // With a constant tangent the internal force is affine in the displacements:
+  // f = f_ref + K (u - u_ref) from the state the tangent was formed at, a
+  // product instead of a pass over the material points (the linear soil's
+  // share of every Newton iteration).
+  NodalVector referenceForce_ = NodalVector::Zero(), referenceDisplacement_ = NodalVector::Zero();
   std::unique_ptr<NodalMatrix> mass_;
   NodalVector force_ = NodalVector::Zero();
 };
