@@ -70,7 +70,19 @@ template <int Dim, class C>
 void SolidElement<Dim, C>::update() {
   for (int a = 0; a < kNodes; ++a)
     displacement_.template segment<Dim>(Dim * a) = nodes()[a]->trialDisp().template head<Dim>();
+  if (constantTangentValid_) {
+    materialsStale_ = true;  // the force is affine (resistingForce)
+    return;
+  }
   setMaterialStrains(displacement_);
+  materialsStale_ = false;
+}
+
+template <int Dim, class C>
+void SolidElement<Dim, C>::refreshMaterials() const {
+  if (!materialsStale_) return;
+  const_cast<SolidElement*>(this)->setMaterialStrains(displacement_);
+  materialsStale_ = false;
 }
 
 template <int Dim, class C>
@@ -83,8 +95,11 @@ template <int Dim, class C>
 MatrixView SolidElement<Dim, C>::tangentStiff() {
   // A linear material's tangent never changes: form it once.
   if (constantTangentValid_) return viewOf(*constantTangent_);
+  refreshMaterials();
   if (hasConstantTangent()) {
     formStiffness(false, buffer(constantTangent_));
+    formInternalForce(referenceForce_);
+    referenceDisplacement_ = displacement_;
     constantTangentValid_ = true;
     return viewOf(*constantTangent_);
   }
@@ -94,6 +109,7 @@ MatrixView SolidElement<Dim, C>::tangentStiff() {
 
 template <int Dim, class C>
 MatrixView SolidElement<Dim, C>::initialStiff() {
+  refreshMaterials();
   formStiffness(true, buffer(stiffness_));
   return viewOf(*stiffness_);
 }
@@ -109,7 +125,12 @@ typename SolidElement<Dim, C>::NodalVector SolidElement<Dim, C>::appliedLoad() c
 
 template <int Dim, class C>
 VectorView SolidElement<Dim, C>::resistingForce() {
-  formInternalForce(force_);
+  if (constantTangentValid_) {
+    force_.noalias() = referenceForce_ + *constantTangent_ * (displacement_ - referenceDisplacement_);
+  } else {
+    refreshMaterials();
+    formInternalForce(force_);
+  }
   force_ -= appliedLoad();
   return viewOf(force_);
 }
@@ -142,17 +163,21 @@ MatrixView SolidElement<Dim, C>::massMatrix() {
 
 template <int Dim, class C>
 void SolidElement<Dim, C>::commitState() {
+  refreshMaterials();
   for (auto& m : materials_) m->commitState();
 }
 
 template <int Dim, class C>
 void SolidElement<Dim, C>::revertToLastCommit() {
+  materialsStale_ = false;  // back to the committed state, which they hold
   for (auto& m : materials_) m->revertToLastCommit();
 }
 
 template <int Dim, class C>
 void SolidElement<Dim, C>::revertToStart() {
+  materialsStale_ = false;
   for (auto& m : materials_) m->revertToStart();
+  materialsChanged();
 }
 
 template <int Dim, class C>
@@ -190,6 +215,7 @@ std::vector<std::string> SolidElement<Dim, C>::pointComponentNames(bool stress) 
 
 template <int Dim, class C>
 Vector SolidElement<Dim, C>::pointVectors(bool stress) const {
+  refreshMaterials();
   const Eigen::Index size = materials_[0]->stress().size();
   Vector out(size * materialPoints());
   for (int p = 0; p < materialPoints(); ++p)
@@ -200,6 +226,7 @@ Vector SolidElement<Dim, C>::pointVectors(bool stress) const {
 template <int Dim, class C>
 Response SolidElement<Dim, C>::setResponse(const std::vector<std::string>& args) {
   if (args.empty()) return {};
+  refreshMaterials();
   const std::string& what = args[0];
   const bool stresses = what == "stresses" || what == "stress";
   if (stresses || what == "strains" || what == "strain") {
@@ -246,6 +273,7 @@ void SolidElement<Dim, C>::materialsChanged() {
 template <int Dim, class C>
 bool SolidElement<Dim, C>::setParameter(const std::vector<std::string>& args, double value) {
   bool accepted = false;
+  refreshMaterials();
   for (auto& m : materials_) accepted = m->setParameter(args, value) || accepted;
   if (accepted) materialsChanged();
   return accepted;
@@ -254,6 +282,7 @@ bool SolidElement<Dim, C>::setParameter(const std::vector<std::string>& args, do
 template <int Dim, class C>
 void SolidElement<Dim, C>::updateMaterialStage(int materialTag, int stage) {
   bool any = false;
+  refreshMaterials();
   for (auto& m : materials_)
     if (m->tag() == materialTag) {
       m->updateStage(stage);
@@ -264,6 +293,7 @@ void SolidElement<Dim, C>::updateMaterialStage(int materialTag, int stage) {
 
 template <int Dim, class C>
 void SolidElement<Dim, C>::initialStateAnalysis(bool on) {
+  refreshMaterials();
   for (auto& m : materials_) m->initialStateAnalysis(on);
   materialsChanged();
 }

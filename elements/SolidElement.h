@@ -87,7 +87,10 @@ class SolidElement : public Element {
   void print(std::ostream& os) const override;
 
   int materialPoints() const { return static_cast<int>(materials_.size()); }
-  const NDMaterial& material(int point) const { return *materials_[point]; }
+  const NDMaterial& material(int point) const {
+    refreshMaterials();
+    return *materials_[point];
+  }
   const BodyForce& bodyForce() const { return bodyForce_; }
   double thickness() const { return thickness_; }
   // Volume (area in 2D, without the thickness) of the element.
@@ -112,6 +115,8 @@ class SolidElement : public Element {
   virtual MassKind massKind() const { return MassKind::Consistent; }
   // A material may have changed its moduli: drop what was built from them.
   virtual void materialsChanged();
+  // Brings the material points to the current displacements if update() left them behind.
+  void refreshMaterials() const;
   // Component names of one material point's stress or strain vector.
   std::vector<std::string> pointComponentNames(bool stress) const;
 
@@ -137,6 +142,15 @@ class SolidElement : public Element {
   // The tangent of linear materials, kept until something may change it.
   std::unique_ptr<NodalMatrix> constantTangent_;
   bool constantTangentValid_ = false;
+  // With a constant tangent the internal force is affine in the displacements:
+  // f = f_ref + K (u - u_ref) from the state the tangent was formed at, a
+  // product instead of a pass over the material points (the linear soil's
+  // share of every Newton iteration).
+  NodalVector referenceForce_ = NodalVector::Zero(), referenceDisplacement_ = NodalVector::Zero();
+  // ... and the material points need their strains only when something reads
+  // them (commit, revert, responses, a tangent formed afresh): update() then
+  // leaves them behind the displacements and refreshMaterials() catches up.
+  mutable bool materialsStale_ = false;
   std::unique_ptr<NodalMatrix> mass_;
   NodalVector force_ = NodalVector::Zero();
 };
