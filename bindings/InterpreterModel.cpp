@@ -91,19 +91,25 @@ namespace {
 
 // OpenSees takes a node's masses one per dof and drops values beyond its ndf
 // (an OpenSeesPy test gives a 3-dof brick node six): kept for unchanged
-// scripts, with a warning. Fewer values than dofs stay an error: OpenSees
-// would leave the missing masses zero without a word.
+// scripts, with a warning. Fewer values than dofs: the `mass` command leaves
+// the missing masses zero, as OpenSees does (with a warning here: it may be a
+// slip), while node's '-mass' refuses them, as OpenSees does too.
 // `warned`: said once until wipe (a meshing loop repeats it per node).
-Vector massPerDof(const Vector& given, int ndf, CommandArgs& a, bool& warned) {
-  if (given.size() < ndf)
+Vector massPerDof(const Vector& given, int ndf, CommandArgs& a, bool& warned, bool padShort) {
+  if (given.size() < ndf && (!padShort || given.size() == 0))
     a.fail("the node has " + std::to_string(ndf) + " dofs but " + std::to_string(given.size()) +
            " mass values were given");
-  if (given.size() > ndf && !warned) {
-    std::cerr << "WARNING " << a.context() << " - " << given.size() << " mass values for " << ndf
-              << " dofs: the values beyond the " << ndf << " are ignored (said once until wipe)\n";
+  if (given.size() != ndf && !warned) {
+    std::cerr << "WARNING " << a.context() << " - " << given.size() << " mass values for " << ndf << " dofs: "
+              << (given.size() > ndf ? "the values beyond the " + std::to_string(ndf) + " are ignored"
+                                     : "the missing ones are zero")
+              << " (said once until wipe)\n";
     warned = true;
   }
-  return given.head(ndf);
+  if (given.size() >= ndf) return given.head(ndf);
+  Vector padded = Vector::Zero(ndf);
+  padded.head(given.size()) = given;
+  return padded;
 }
 
 }  // namespace
@@ -151,7 +157,7 @@ Result Interpreter::node(CommandArgs& a) {
     }
   }
   auto n = std::make_unique<Node>(tag, ndf, x, ndm);
-  if (mass.size()) n->setMass(massPerDof(mass, ndf, a, extraMassWarned_));
+  if (mass.size()) n->setMass(massPerDof(mass, ndf, a, extraMassWarned_, false));
   if (disp.size()) {
     if (disp.size() != ndf) a.fail("-disp needs " + std::to_string(ndf) + " values, got " + std::to_string(disp.size()));
     n->setTrialDisp(disp);
@@ -333,7 +339,7 @@ Result Interpreter::mass(CommandArgs& a) {
   Node& n = domain_->node(tag, a.context());
   auto m = a.nextDoubles("mass", 1);
   a.expectEnd();
-  n.setMass(massPerDof(Eigen::Map<Vector>(m.data(), m.size()), n.ndf(), a, extraMassWarned_));
+  n.setMass(massPerDof(Eigen::Map<Vector>(m.data(), m.size()), n.ndf(), a, extraMassWarned_, true));
   return {};
 }
 

@@ -17,7 +17,7 @@ CASES = [
     ("node", (3, 0.0, 0.0), "node 3: expected 3 coordinates (x, y, z) in a model with -ndm 3, got 2"),
     ("node", (3, 0.0, 0.0, 0.0, 0.0), "node 3: expected 3 coordinates (x, y, z) in a model with -ndm 3, got 4"),
     ("fix", (1, 1, 1), "has 3 dofs but 2 flags"),
-    ("mass", (1, 1.0), "has 3 dofs but 1 mass values"),
+    ("mass", (1,), "argument 2 (mass): expected at least 1 number"),
     ("equalDOF", (1, 2), "argument 3 (dof): expected at least 1"),
     ("load", (1, 1.0, 0.0), "has 3 dofs but 2 load values"),
     ("model", ("basic", "-ndm", 4), "-ndm must be 1, 2 or 3, got 4"),

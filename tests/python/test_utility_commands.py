@@ -333,7 +333,7 @@ def test_default_units_checks_names_and_scales_nothing(m):
             m.defaultUnits(*bad)
 
 
-def test_mass_values_beyond_the_node_dofs_are_dropped_with_a_warning(m, capfd):
+def test_mass_values_beyond_the_node_dofs_are_dropped_and_missing_ones_zero(m, capfd):
     # OpenSees (and its dev_test_Brick script) gives 3-dof nodes six masses:
     # the first ndf are the node's, the rest are dropped. A bar k = EA/L with
     # the tip's x mass 2: omega^2 = k / 2.
@@ -355,6 +355,13 @@ def test_mass_values_beyond_the_node_dofs_are_dropped_with_a_warning(m, capfd):
     m.element("truss", 1, 1, 2, 1.0, 1)
     lam = m.eigen("-fullGenLapack", 1)
     assert lam[0] == pytest.approx((100.0 / 4.0) / 2.0, rel=1e-12)
-    # Fewer values than dofs stay an error (OpenSees would zero the rest silently).
-    with pytest.raises(beamsolid.OpenSeesError, match="mass 3: the node has 3 dofs but 2 mass values"):
-        m.mass(3, 1.0, 1.0)
+    # Fewer values than dofs: `mass` leaves the rest zero, as OpenSeesPy does (a 2D frame script's
+    # mass(n, m) on a 3-dof node), with the warning; node's '-mass' refuses them, as OpenSeesPy does.
+    m.wipe()
+    m.model("basic", "-ndm", 2, "-ndf", 3)
+    m.node(1, 0.0, 0.0)
+    m.mass(1, 5.0)
+    assert m.nodeMass(1) == [5.0, 0.0, 0.0]
+    assert "WARNING mass 1 - 1 mass values for 3 dofs: the missing ones are zero" in capfd.readouterr().err
+    with pytest.raises(beamsolid.OpenSeesError, match="node 2: the node has 3 dofs but 2 mass values"):
+        m.node(2, 1.0, 0.0, "-mass", 7.0, 8.0)
