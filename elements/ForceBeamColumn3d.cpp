@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <iostream>
+#include <variant>
 
 #include "core/CommandArgs.h"
 #include "core/Domain.h"
+#include "core/OpenSeesError.h"
 #include "core/Registry.h"
 #include "elements/ForceBeamColumn2d.h"
 
@@ -176,6 +178,52 @@ std::unique_ptr<Element> buildForceBeamColumn3d(CommandArgs& args, Domain& domai
   return std::make_unique<ForceBeamColumn3d>(tag, std::move(d));
 }
 
+// element('mixedBeamColumn', tag, i, j, transfTag, integrationTag, <'-mass', m>, <'-doRayleigh', 1>):
+// OpenSees' mixed (Hellinger-Reissner) beam. Without '-geomNonlinear' it reaches the force-based
+// element's state iteration by iteration: OpenSeesPy 3.7.1 gives the same load factors,
+// displacements and local forces (to 1e-15) and the same Newton iteration counts for Linear,
+// PDelta and Corotational transformations, fiber sections that yield, element loads, 2D and 3D,
+// and the same lumped mass (eigenvalues to 1e-15). So it is the force-based element here.
+// As OpenSees, only the (transfTag, integrationTag) form; other options ('-iter', '-cMass',
+// '-orient', ...) are ignored with a warning.
+std::unique_ptr<Element> buildMixedBeamColumn(CommandArgs& args, Domain& domain) {
+  using Value = CommandArgs::Value;
+  const std::size_t start = args.position();
+  std::vector<Value> kept;
+  std::size_t at = start;
+  auto isString = [&](std::size_t i) { return std::holds_alternative<std::string>(args.at(i)); };
+  while (at < args.size() && !isString(at)) kept.push_back(args.at(at++));
+  const std::string context =
+      "element mixedBeamColumn" + (kept.empty() ? std::string() : " " + CommandArgs::describe(kept.front()));
+  if (kept.size() != 5)
+    throw OpenSeesError(context + ": expected eleTag, iNode, jNode, transfTag, integrationTag (got " +
+                        std::to_string(kept.size()) + " numbers before the options); OpenSees' mixedBeamColumn "
+                        "has no (numIntgrPts, secTag, transfTag) form");
+  while (at < args.size()) {
+    const std::string option = std::get<std::string>(args.at(at++));
+    if (option == "-mass") {
+      kept.push_back(option);
+      if (at < args.size()) kept.push_back(args.at(at++));
+    } else if (option == "-doRayleigh") {
+      // Rayleigh damping is on by default; 0 (off) is not available for this element here.
+      if (at < args.size() && !isString(at)) {
+        const Value& flag = args.at(at++);
+        const double v = std::holds_alternative<long long>(flag) ? double(std::get<long long>(flag))
+                                                                 : std::get<double>(flag);
+        if (v == 0.0) throw OpenSeesError(context + ": '-doRayleigh 0' is not available (its Rayleigh damping is on)");
+      }
+    } else if (option == "-geomNonlinear") {
+      throw OpenSeesError(context + ": '-geomNonlinear' (the mixed formulation's internal P-small-delta) is not "
+                          "built; use a PDelta or Corotational geomTransf");
+    } else {
+      std::cerr << "WARNING " << context << " - unknown option " << option << " ignored, as OpenSees ignores it\n";
+      while (at < args.size() && !isString(at)) ++at;
+    }
+  }
+  CommandArgs filtered(args.command(), std::move(kept));
+  return buildForceBeamColumn3d(filtered, domain, "mixedBeamColumn");
+}
+
 void registerForceBeamColumn3d(Registry& r) {
   r.elements.add("forceBeamColumn", [](CommandArgs& args, Domain& domain) {
     return buildForceBeamColumn3d(args, domain, "forceBeamColumn");
@@ -183,6 +231,7 @@ void registerForceBeamColumn3d(Registry& r) {
   r.elements.add("nonlinearBeamColumn", [](CommandArgs& args, Domain& domain) {
     return buildForceBeamColumn3d(args, domain, "nonlinearBeamColumn");
   });
+  r.elements.add("mixedBeamColumn", buildMixedBeamColumn);
 }
 
 }  // namespace

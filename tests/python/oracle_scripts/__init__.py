@@ -8,6 +8,7 @@ script its own).
 """
 
 SCRIPTS = (
+    "mixed_beam_column",
     "sensitivity_2d",
     "layered_shells",
     "orthotropic",

@@ -150,6 +150,12 @@ KNOWN_DIFFERENCES = {
         "(5e-7 of the axial force), BeamSolid's equal b q to round-off. Not traced to the update; the likely cause "
         "is OpenSees' element fall-back past the tangent and initial-flexibility attempts, not reproduced. Every "
         "step's load factor, displacement and iteration count, the base section and the basic forces agree to 1e-8",
+    ("mixed_beam_column", "2d.Linear"):
+        "forceBeamColumn (which mixedBeamColumn is, in both programs here): at the one step where fibers yield "
+        "between Newton iterations (step 15 of 25) OpenSeesPy takes 3 iterations, BeamSolid 2, at any test "
+        "tolerance from 1e-10 to 1e-12; the element-level iteration differs (see example3_cantilever). The load "
+        "factors, displacements and local forces of every step agree to 1e-8, the other steps' iteration counts "
+        "exactly",
     ("modal_damping", "column.hht"):
         "modalDamping under HHT: BeamSolid evaluates the modal damping force at the alpha-state velocity, as "
         "it does Rayleigh damping; OpenSeesPy 3.7.1 gives 4e-4 relative different displacements from the first "
