@@ -1,5 +1,7 @@
 #include "analysis/AnalysisModel.h"
 
+#include <map>
+
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -284,6 +286,7 @@ void AnalysisModel::formUnbalance() {
 void AnalysisModel::formReferenceLoad(Vector& out) const {
   out = Vector::Zero(numEquations());
   const double t = domain_.currentTime();
+  std::map<int, std::vector<std::pair<const ElementLoad*, double>>> loaded;  // element tag -> (load, slope)
   for (const auto& [tag, pattern] : domain_.patterns()) {
     const double slope = pattern->factorSlope(t);
     if (slope == 0.0) continue;
@@ -294,6 +297,37 @@ void AnalysisModel::formReferenceLoad(Vector& out) const {
         for (auto* term = map_.fullTermsBegin(start + d); term != map_.fullTermsEnd(start + d); ++term)
           out[term->equation] += slope * term->coefficient * nl.load[d];
     }
+    for (const auto& el : pattern->elementLoads()) loaded[el.elementTag].push_back({&el.load, slope});
+  }
+  if (loaded.empty()) return;
+  // The element loads of those patterns belong in -dR/dlambda too (OpenSees' reference load carries
+  // their nodal equivalents; without them a path-following step converges only linearly when the
+  // pushed pattern has element loads). Each loaded element's force is taken without its loads and
+  // with them at the patterns' slopes, then its loads of the current time are put back. An element
+  // whose loads act only through its state determination (forceBeamColumn) shows no difference here.
+  const auto& elements = map_.elements();
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    const auto it = loaded.find(elements[e]->tag());
+    if (it == loaded.end()) continue;
+    Element& element = *elements[e];
+    element.zeroLoad();
+    const Vector without = element.resistingForce();
+    for (const auto& [load, slope] : it->second) element.addLoad(*load, slope);
+    const Vector with = element.resistingForce();
+    element.zeroLoad();
+    for (const auto& [tag, pattern] : domain_.patterns()) {
+      double factor = 0.0;
+      bool any = false;
+      for (const auto& el : pattern->elementLoads())
+        if (el.elementTag == element.tag()) {
+          if (!any) factor = pattern->factor(t), any = true;
+          element.addLoad(el.load, factor);
+        }
+    }
+    const int n = map_.elementMaps()[e].numDOF;
+    for (int i = 0; i < n; ++i)
+      for (auto* term = map_.elementTermsBegin(e, i); term != map_.elementTermsEnd(e, i); ++term)
+        out[term->equation] += term->coefficient * (without[i] - with[i]);
   }
 }
 
