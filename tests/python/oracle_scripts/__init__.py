@@ -8,6 +8,7 @@ script its own).
 """
 
 SCRIPTS = (
+    "path_following_element_loads",
     "mixed_beam_column",
     "sensitivity_2d",
     "layered_shells",
